@@ -1,0 +1,309 @@
+/* ----------------------------------------------------------------------
+   cellmech: bond style cell/tether
+
+   Each tether's rest length l0 is the distance between the REFERENCE
+   positions of its two wall nodes, a per-atom array d2_cellref (3 columns)
+   of fix property/atom. Storing the reference geometry per atom rather than
+   a length per bond keeps l0 with the atoms through MPI migration, restart
+   files and write_data with no bond bookkeeping, and lets every tether have
+   its own rest length (an icosahedral sphere is not equilateral).
+------------------------------------------------------------------------- */
+
+#include "bond_cell_tether.h"
+
+#include "atom.h"
+#include "cell_physics.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace CellPhysics;
+
+static constexpr char REF_NAME[] = "cellref";
+
+/* ---------------------------------------------------------------------- */
+
+BondCellTether::BondCellTether(LAMMPS *_lmp) :
+    Bond(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1),
+    lmax(0.0), nbroken_local(0)
+{
+  born_matrix_enable = 0;
+}
+
+BondCellTether::~BondCellTether()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(G);
+    memory->destroy(t0);
+    memory->destroy(gamma);
+    memory->destroy(lamf);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondCellTether::rest_length(int i, int j) const
+{
+  double **ref = atom->darray[iref];
+  const double dx = ref[i][0] - ref[j][0];
+  const double dy = ref[i][1] - ref[j][1];
+  const double dz = ref[i][2] - ref[j][2];
+  return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellTether::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  tagint *tag = atom->tag;
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  double ebond = 0.0;
+
+  for (int n = 0; n < nbondlist; n++) {
+    const int i1 = bondlist[n][0];
+    const int i2 = bondlist[n][1];
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;    // broken
+
+    const double delx = x[i1][0] - x[i2][0];
+    const double dely = x[i1][1] - x[i2][1];
+    const double delz = x[i1][2] - x[i2][2];
+    const double rsq = delx * delx + dely * dely + delz * delz;
+    const double r = sqrt(rsq);
+    const double l0 = rest_length(i1, i2);
+    if (!(l0 > 0.0))
+      error->one(FLERR,
+                 "Bond style cell/tether: tether {}-{} has zero rest length; are the d2_cellref "
+                 "reference positions set and communicated to ghosts (ghost yes)?",
+                 tag[i1], tag[i2]);
+    const double lam = r / l0;
+
+    // Failure is tension only: a compressed tether never breaks. A broken bond keeps its
+    // place in the topology with type 0, as bond style quartic does, so it is skipped here
+    // and by every later neighbor list build on all ranks.
+    if (lamf[type] > 0.0 && lam > lamf[type]) {
+      bondlist[n][2] = 0;
+      for (int m = 0; m < atom->num_bond[i1]; m++)
+        if (atom->bond_atom[i1][m] == tag[i2]) atom->bond_type[i1][m] = 0;
+      if (i2 < nlocal)
+        for (int m = 0; m < atom->num_bond[i2]; m++)
+          if (atom->bond_atom[i2][m] == tag[i1]) atom->bond_type[i2][m] = 0;
+      // with newton_bond off both owners see the bond; count it once, on the lower tag
+      if (newton_bond || i2 < nlocal || tag[i1] < tag[i2]) nbroken_local++;
+      continue;
+    }
+
+    double fbond = -tether_tension(G[type], t0[type], l0, lam) / r;
+    if (gamma[type] > 0.0) {
+      const double dvx = v[i1][0] - v[i2][0];
+      const double dvy = v[i1][1] - v[i2][1];
+      const double dvz = v[i1][2] - v[i2][2];
+      fbond -= gamma[type] * (delx * dvx + dely * dvy + delz * dvz) / rsq;
+    }
+    if (eflag) ebond = tether_energy(G[type], t0[type], l0, lam);
+
+    if (newton_bond || i1 < nlocal) {
+      f[i1][0] += delx * fbond;
+      f[i1][1] += dely * fbond;
+      f[i1][2] += delz * fbond;
+    }
+    if (newton_bond || i2 < nlocal) {
+      f[i2][0] -= delx * fbond;
+      f[i2][1] -= dely * fbond;
+      f[i2][2] -= delz * fbond;
+    }
+    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellTether::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->nbondtypes + 1;
+  memory->create(G, np1, "bond:G");
+  memory->create(t0, np1, "bond:t0");
+  memory->create(gamma, np1, "bond:gamma");
+  memory->create(lamf, np1, "bond:lamf");
+  memory->create(setflag, np1, "bond:setflag");
+  for (int i = 1; i < np1; i++) setflag[i] = 0;
+}
+
+void BondCellTether::settings(int narg, char ** /*arg*/)
+{
+  if (narg != 0)
+    error->all(FLERR, "Illegal bond_style cell/tether command: expected no arguments, got {}",
+               narg);
+}
+
+/* ----------------------------------------------------------------------
+   bond_coeff N G t0 gamma [lamf value]
+------------------------------------------------------------------------- */
+
+void BondCellTether::coeff(int narg, char **arg)
+{
+  if (narg != 4 && narg != 6)
+    error->all(FLERR,
+               "Incorrect number of args for bond_coeff cell/tether: expected "
+               "'bond_coeff N G t0 gamma [lamf value]', got {} arguments",
+               narg);
+  if (!allocated) allocate();
+
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
+
+  const double G_one = utils::numeric(FLERR, arg[1], false, lmp);
+  const double t0_one = utils::numeric(FLERR, arg[2], false, lmp);
+  const double gamma_one = utils::numeric(FLERR, arg[3], false, lmp);
+  double lamf_one = 0.0;
+  if (narg == 6) {
+    if (strcmp(arg[4], "lamf") != 0)
+      error->all(FLERR, "Unknown keyword '{}' in bond_coeff cell/tether: expected 'lamf'", arg[4]);
+    lamf_one = utils::numeric(FLERR, arg[5], false, lmp);
+    if (lamf_one <= 1.0)
+      error->all(FLERR,
+                 "bond_coeff cell/tether: critical stretch lamf must be > 1 (a tether breaks "
+                 "when l/l0 > lamf), got {}",
+                 lamf_one);
+  }
+  if (G_one <= 0.0)
+    error->all(FLERR, "bond_coeff cell/tether: shear modulus G must be > 0, got {}", G_one);
+  if (t0_one <= 0.0)
+    error->all(FLERR, "bond_coeff cell/tether: wall thickness t0 must be > 0, got {}", t0_one);
+  if (gamma_one < 0.0)
+    error->all(FLERR, "bond_coeff cell/tether: damping gamma must be >= 0, got {}", gamma_one);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    G[i] = G_one;
+    t0[i] = t0_one;
+    gamma[i] = gamma_one;
+    lamf[i] = lamf_one;
+    setflag[i] = 1;
+    count++;
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for bond coefficients");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellTether::init_style()
+{
+  int flag, cols;
+  iref = atom->find_custom(REF_NAME, flag, cols);
+  if (iref < 0 || flag != 1 || cols != 3)
+    error->all(FLERR,
+               "Bond style cell/tether requires the wall reference positions as a per-atom array: "
+               "'fix ID all property/atom d2_{} 3 ghost yes' before read_data, filled from the "
+               "data file (read_data ... fix ID NULL CellRef)",
+               REF_NAME);
+
+  bool damped = false;
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    if (setflag[i] && gamma[i] > 0.0) damped = true;
+  if (damped && !comm->ghost_velocity)
+    error->all(FLERR,
+               "Bond style cell/tether with damping gamma > 0 requires 'comm_modify vel yes' "
+               "(ghost velocities)");
+
+  // longest rest length of the local bonds, for LAMMPS's bond-extent sanity check
+  double lmax_local = 0.0;
+  if (atom->darray[iref]) {
+    for (int i = 0; i < atom->nlocal; i++)
+      for (int m = 0; m < atom->num_bond[i]; m++) {
+        const int j = atom->map(atom->bond_atom[i][m]);
+        if (j >= 0) lmax_local = MAX(lmax_local, rest_length(i, j));
+      }
+  }
+  MPI_Allreduce(&lmax_local, &lmax, 1, MPI_DOUBLE, MPI_MAX, world);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondCellTether::equilibrium_distance(int /*i*/)
+{
+  return lmax;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellTether::write_restart(FILE *fp)
+{
+  fwrite(&G[1], sizeof(double), atom->nbondtypes, fp);
+  fwrite(&t0[1], sizeof(double), atom->nbondtypes, fp);
+  fwrite(&gamma[1], sizeof(double), atom->nbondtypes, fp);
+  fwrite(&lamf[1], sizeof(double), atom->nbondtypes, fp);
+}
+
+void BondCellTether::read_restart(FILE *fp)
+{
+  allocate();
+  const int n = atom->nbondtypes;
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &G[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &t0[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &lamf[1], sizeof(double), n, fp, nullptr, error);
+  }
+  MPI_Bcast(&G[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&t0[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&lamf[1], n, MPI_DOUBLE, 0, world);
+  for (int i = 1; i <= n; i++) setflag[i] = 1;
+}
+
+void BondCellTether::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nbondtypes; i++) {
+    if (lamf[i] > 0.0)
+      fprintf(fp, "%d %.15g %.15g %.15g lamf %.15g\n", i, G[i], t0[i], gamma[i], lamf[i]);
+    else
+      fprintf(fp, "%d %.15g %.15g %.15g\n", i, G[i], t0[i], gamma[i]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondCellTether::single(int type, double rsq, int i, int j, double &fforce)
+{
+  const double r = sqrt(rsq);
+  const double l0 = rest_length(i, j);
+  const double lam = r / l0;
+  fforce = -tether_tension(G[type], t0[type], l0, lam) / r;
+  if (gamma[type] > 0.0) {
+    double **x = atom->x;
+    double **v = atom->v;
+    double dot = 0.0;
+    for (int d = 0; d < 3; d++) dot += (x[i][d] - x[j][d]) * (v[i][d] - v[j][d]);
+    fforce -= gamma[type] * dot / rsq;
+  }
+  return tether_energy(G[type], t0[type], l0, lam);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void *BondCellTether::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "G") == 0) return (void *) G;
+  if (strcmp(str, "t0") == 0) return (void *) t0;
+  if (strcmp(str, "gamma") == 0) return (void *) gamma;
+  if (strcmp(str, "lamf") == 0) return (void *) lamf;
+  return nullptr;
+}

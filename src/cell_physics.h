@@ -1,0 +1,106 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellmech: LAMMPS plugin for the micromechanics of biological cells.
+   Pure physics of the SPH-DEM plant cell model (Van Liedekerke et al.,
+   Phys. Rev. E 81, 061906 (2010)), free of LAMMPS so tests can call it.
+   Equation numbers refer to that paper; see ../shared/MODEL.md.
+------------------------------------------------------------------------- */
+
+#ifndef CELLMECH_CELL_PHYSICS_H
+#define CELLMECH_CELL_PHYSICS_H
+
+#include <cmath>
+
+namespace CellPhysics {
+
+constexpr double SQRT3 = 1.7320508075688772;
+
+/* ---------------------------------------------------------------------
+   Neo-Hookean tether (Eq. 19). A tether of rest length l0 in a wall of
+   shear modulus G and thickness t0 carries the tension
+     f(lam) = (G l0 t0 / sqrt3) (lam - lam^-5),  lam = l / l0,
+   derived from the equibiaxial Neo-Hookean stress with the incompressible
+   thinning l t = l0 t0 / lam (Eq. 18). Positive = tensile.
+------------------------------------------------------------------------ */
+
+inline double tether_tension(double G, double t0, double l0, double lam)
+{
+  const double lam2 = lam * lam;
+  const double lam5 = lam2 * lam2 * lam;
+  return G * l0 * t0 / SQRT3 * (lam - 1.0 / lam5);
+}
+
+// Energy is the exact integral of the tension over l = lam l0, zero at rest, so that
+// minimisation and energy conservation see the same law as the dynamics:
+//   U = (G t0 l0^2 / sqrt3) [(u - 1)/2 + (u^-2 - 1)/4] = (G t0 l0^2 / sqrt3) (u-1)^2 (2u+1) / (4u^2),
+// u = lam^2. The factored form avoids the cancellation of the first near rest.
+inline double tether_energy(double G, double t0, double l0, double lam)
+{
+  const double u = lam * lam;
+  const double um1 = (lam - 1.0) * (lam + 1.0);
+  return G * t0 * l0 * l0 / SQRT3 * um1 * um1 * (2.0 * u + 1.0) / (4.0 * u * u);
+}
+
+// Small-strain stiffness d f / d l at lam = 1 (Eq. 20): 6 G t0 / sqrt3, independent of l0.
+inline double tether_stiffness(double G, double t0)
+{
+  return 6.0 * G * t0 / SQRT3;
+}
+
+// Membrane tension (force per length) of an equilateral tether network under equibiaxial
+// stretch lam: T = sqrt3 f / l = G t0 (1 - lam^-6), the Neo-Hookean sheet of Eq. 15
+// with t = t0 / lam^2. Used for Young-Laplace checks: P R / 2 = T.
+inline double equibiaxial_tension(double G, double t0, double lam)
+{
+  const double lam2 = lam * lam;
+  return G * t0 * (1.0 - 1.0 / (lam2 * lam2 * lam2));
+}
+
+/* ---------------------------------------------------------------------
+   8-4 excluded-volume repulsion (Eq. 12), cut at r0 (repulsive part only):
+     F_vec = f0 [(r0/r)^8 - (r0/r)^4] / r^2 * r_vec
+   repulsion84_fpair returns the factor multiplying r_vec (LAMMPS "fpair").
+------------------------------------------------------------------------ */
+
+inline double repulsion84_fpair(double f0, double r0, double rsq)
+{
+  if (rsq >= r0 * r0) return 0.0;
+  const double s2 = r0 * r0 / rsq;
+  const double s4 = s2 * s2;
+  return f0 * (s4 * s4 - s4) / rsq;
+}
+
+// Energy shifted to vanish at the cutoff r0: E = f0 [s^8/8 - s^4/4 + 1/8], s = r0 / r.
+inline double repulsion84_energy(double f0, double r0, double rsq)
+{
+  if (rsq >= r0 * r0) return 0.0;
+  const double s2 = r0 * r0 / rsq;
+  const double s4 = s2 * s2;
+  return f0 * (0.125 * s4 * s4 - 0.25 * s4 + 0.125);
+}
+
+/* ---------------------------------------------------------------------
+   Thin spherical shell, breathing mode in vacuo (Eq. A5):
+     omega = (1/R) sqrt(4 E / rho_s),  rho_s = M_wall / (4 pi R^2 t0).
+------------------------------------------------------------------------ */
+
+inline double breathing_omega_vacuo(double E, double R, double wall_mass, double t0)
+{
+  const double rho_s = wall_mass / (4.0 * M_PI * R * R * t0);
+  return std::sqrt(4.0 * E / rho_s) / R;
+}
+
+/* Uniaxial stretch of a flat tether sheet (paper, Appendix 1): boundary force for a sheet
+   whose loaded edge has length L0. Eq. A1 and Eq. A2 as printed in the paper. */
+inline double sheet_force_A1(double G, double L0, double t0, double lam)
+{
+  return G * L0 * t0 * (lam * lam - 1.0 / (lam * lam));
+}
+
+inline double sheet_force_A2(double G, double L0, double t0, double lam)
+{
+  return G * L0 * t0 * (lam * lam - 1.0 / lam) * std::sqrt(lam);
+}
+
+}    // namespace CellPhysics
+
+#endif

@@ -1,0 +1,63 @@
+/* ----------------------------------------------------------------------
+   cellmech: the plugin entry point. All styles of the package register
+   here, after a check that the LAMMPS loading us is the one we were built
+   against (LAMMPS only warns on version mismatch and does not compare
+   integer sizes or MPI, which corrupts memory silently).
+------------------------------------------------------------------------- */
+
+#include "lammpsplugin.h"
+
+#include "cell_compat.h"
+#include "error.h"
+#include "lammps.h"
+#include "version.h"
+
+#include "bond_cell_tether.h"
+#include "pair_cell_lj84.h"
+
+using namespace LAMMPS_NS;
+
+static Bond *bond_cell_tether_creator(LAMMPS *lmp)
+{
+  return new BondCellTether(lmp);
+}
+
+static Pair *pair_cell_lj84_creator(LAMMPS *lmp)
+{
+  return new PairCellLJ84(lmp);
+}
+
+extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
+{
+  auto lmp = (LAMMPS *) ptr;
+  const auto built = CellMech::compiled_signature();
+  const std::string why = CellMech::compat_mismatch(lmp, built);
+  if (!why.empty()) {
+    // Refuse to register anything: a style compiled for other type sizes would corrupt memory.
+    if (lmp->error)
+      lmp->error->warning(FLERR,
+                          "cellmech plugin NOT loaded: it was built for a different LAMMPS:\n{}"
+                          "Rebuild the plugin against this LAMMPS (tools/setup.sh, or cmake "
+                          "-DLAMMPS_SOURCE_DIR=... -DLAMMPS_BINARY_DIR=...).",
+                          why);
+    return;
+  }
+
+  lammpsplugin_t plugin;
+  auto register_plugin = (lammpsplugin_regfunc) regfunc;
+  plugin.version = LAMMPS_VERSION;
+  plugin.author = "cellmech developers";
+  plugin.handle = handle;
+
+  plugin.style = "bond";
+  plugin.name = "cell/tether";
+  plugin.info = "cellmech Neo-Hookean cell wall tether";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &bond_cell_tether_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "pair";
+  plugin.name = "cell/lj84";
+  plugin.info = "cellmech 8-4 excluded-volume repulsion with contact damping";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_cell_lj84_creator;
+  (*register_plugin)(&plugin, lmp);
+}

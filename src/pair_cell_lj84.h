@@ -1,0 +1,44 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellmech: 8-4 excluded-volume repulsion (Eq. 12) with contact damping,
+   between fluid and wall and between non-bonded wall particles.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(cell/lj84,PairCellLJ84);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_CELL_LJ84_H
+#define LMP_PAIR_CELL_LJ84_H
+
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class PairCellLJ84 : public Pair {
+ public:
+  PairCellLJ84(class LAMMPS *);
+  ~PairCellLJ84() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_data(FILE *) override;
+  void write_data_all(FILE *) override;
+  double single(int, int, int, int, double, double, double, double &) override;
+  void *extract(const char *, int &) override;
+
+ protected:
+  double **f0, **r0, **gamma;
+
+  void allocate();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,212 @@
+// cellmech styles inside an in-process LAMMPS: forces against the formulas, bad input gives a
+// LAMMPS error that names the command and what was expected, and the plugin guard.
+#include "atom.h"
+#include "exceptions.h"
+#include "force.h"
+#include "input.h"
+#include "lammps.h"
+#include "modify.h"
+#include "variable.h"
+
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+class Lmp : public ::testing::Test {
+ protected:
+  LAMMPS *lmp = nullptr;
+  void SetUp() override { lmp = make(); }
+  void TearDown() override { delete lmp; }
+
+  static LAMMPS *make()
+  {
+    const char *args[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", nullptr};
+    auto *l = new LAMMPS(7, (char **) args, MPI_COMM_WORLD);
+    l->input->one(std::string("plugin load ") + CELLMECH_PLUGIN);
+    return l;
+  }
+  void cmd(const std::string &line) { lmp->input->one(line); }
+  void cmds(const std::vector<std::string> &lines)
+  {
+    for (auto &l : lines) cmd(l);
+  }
+  // run a command and return the LAMMPS error message it raised ("" if none)
+  std::string error_of(const std::string &line)
+  {
+    try {
+      cmd(line);
+    } catch (LAMMPSException &e) {
+      return e.what();
+    }
+    return "";
+  }
+  double f(int tag, int d) { return lmp->atom->f[lmp->atom->map(tag)][d]; }
+
+  // two wall nodes joined by one tether, reference (rest) distance l0 along x, stretched to l
+  void two_nodes(double l0, double l, const std::string &coeff = "1 8e5 0.126 0.0")
+  {
+    cmds({"units micro", "atom_style molecular", "atom_modify map array",
+          "region box block -10 10 -10 10 -10 10",
+          "create_box 1 box bond/types 1 extra/bond/per/atom 1 extra/special/per/atom 2",
+          "fix ref all property/atom d2_cellref 3 ghost yes", "mass 1 5.0",
+          "create_atoms 1 single 0 0 0", "create_atoms 1 single " + std::to_string(l) + " 0 0",
+          "set atom 2 d2_cellref[1] " + std::to_string(l0), "create_bonds single/bond 1 1 2",
+          "bond_style cell/tether", "bond_coeff " + coeff, "pair_style zero 1.0",
+          "pair_coeff * *"});
+  }
+};
+
+TEST_F(Lmp, TetherForceInLammpsIsEq19)
+{
+  const double G = 8e5, t0 = 0.126, l0 = 2.5;
+  for (double lam : {0.9, 1.01, 1.2}) {
+    delete lmp;
+    lmp = make();
+    two_nodes(l0, lam * l0);
+    cmd("run 0");
+    const double expect = G * l0 * t0 / std::sqrt(3.0) * (lam - std::pow(lam, -5));
+    // atom 1 at the origin is pulled toward atom 2 (+x) when stretched
+    const double got = f(1, 0);
+    std::printf("lam %.2f  LAMMPS force %.10g  Eq.19 %.10g\n", lam, got, expect);
+    EXPECT_NEAR(got, expect, 1e-10 * std::fabs(expect));
+    EXPECT_NEAR(f(2, 0), -expect, 1e-10 * std::fabs(expect));
+  }
+}
+
+TEST_F(Lmp, TetherDampingAlongBond)
+{
+  const double gamma = 0.1;
+  two_nodes(2.5, 2.5, "1 8e5 0.126 0.1");
+  cmds({"comm_modify vel yes", "velocity all set 0 0 0", "set atom 2 vx 3.0 vy 7.0", "run 0"});
+  // at rest length only damping acts, along x only: -gamma (v12 . e) e on atom 1, v12 = -3 x
+  EXPECT_NEAR(f(1, 0), gamma * 3.0, 1e-12);
+  EXPECT_NEAR(f(1, 1), 0.0, 1e-12);
+}
+
+TEST_F(Lmp, TetherBreaksAboveCriticalStretch)
+{
+  two_nodes(2.5, 2.5 * 1.05, "1 8e5 0.126 0.0 lamf 1.04");
+  cmd("run 0");
+  EXPECT_EQ(f(1, 0), 0.0);
+  delete lmp;
+  lmp = make();
+  two_nodes(2.5, 2.5 * 1.03, "1 8e5 0.126 0.0 lamf 1.04");
+  cmd("run 0");
+  EXPECT_GT(f(1, 0), 0.0);
+}
+
+TEST_F(Lmp, Repulsion84InLammps)
+{
+  const double f0 = 3.0, r0 = 2.0, r = 1.7;
+  cmds({"units micro", "atom_style atomic", "atom_modify map array",
+        "region box block -10 10 -10 10 -10 10", "create_box 2 box", "mass * 1.0",
+        "create_atoms 1 single 0 0 0", "create_atoms 2 single 0 " + std::to_string(r) + " 0",
+        "pair_style cell/lj84", "pair_coeff * * " + std::to_string(f0) + " " +
+            std::to_string(r0),
+        "run 0"});
+  const double expect = f0 * (std::pow(r0 / r, 8) - std::pow(r0 / r, 4)) / r;
+  std::printf("8-4 repulsion at r %.2f: LAMMPS %.10g  Eq.12 %.10g\n", r, -f(1, 1), expect);
+  EXPECT_NEAR(-f(1, 1), expect, 1e-10 * expect);
+  EXPECT_NEAR(f(2, 1), expect, 1e-10 * expect);
+}
+
+// ---------------------------------------------------------------- bad input
+
+#define EXPECT_ERROR(line, pattern)                                                 \
+  do {                                                                              \
+    std::string msg = error_of(line);                                               \
+    std::printf("%s\n  -> %s\n", line, msg.c_str());                                \
+    EXPECT_TRUE(std::regex_search(msg, std::regex(pattern))) << "message: " << msg; \
+  } while (0)
+
+TEST_F(Lmp, BondBadInput)
+{
+  two_nodes(2.5, 2.5);
+  EXPECT_ERROR("bond_style cell/tether 1.0", "bond_style cell/tether.*expected no arguments");
+  EXPECT_ERROR("bond_coeff 1 8e5 0.126", "bond_coeff cell/tether.*expected.*G t0 gamma");
+  EXPECT_ERROR("bond_coeff 1 -8e5 0.126 0", "bond_coeff cell/tether: shear modulus G must be > 0");
+  EXPECT_ERROR("bond_coeff 1 8e5 0 0", "bond_coeff cell/tether: wall thickness t0 must be > 0");
+  EXPECT_ERROR("bond_coeff 1 8e5 0.1 -1", "bond_coeff cell/tether: damping gamma must be >= 0");
+  EXPECT_ERROR("bond_coeff 1 8e5 0.1 0 lamx 1.04", "Unknown keyword 'lamx'.*expected 'lamf'");
+  EXPECT_ERROR("bond_coeff 1 8e5 0.1 0 lamf 0.9", "lamf must be > 1");
+  EXPECT_ERROR("bond_coeff 1 8e5 abc 0", "Expected floating point");
+  cmd("bond_coeff 1 8e5 0.126 0.1");
+  EXPECT_ERROR("run 0", "cell/tether with damping gamma > 0 requires 'comm_modify vel yes'");
+}
+
+TEST_F(Lmp, BondNeedsReferencePositions)
+{
+  cmds({"units micro", "atom_style molecular", "region box block -10 10 -10 10 -10 10",
+        "create_box 1 box bond/types 1 extra/bond/per/atom 1 extra/special/per/atom 2",
+        "mass 1 1.0", "create_atoms 1 single 0 0 0", "create_atoms 1 single 2 0 0",
+        "create_bonds single/bond 1 1 2", "bond_style cell/tether", "bond_coeff 1 8e5 0.126 0",
+        "pair_style zero 1.0", "pair_coeff * *"});
+  EXPECT_ERROR("run 0", "cell/tether requires the wall reference positions.*d2_cellref 3");
+}
+
+TEST_F(Lmp, BondNeedsBondAtomStyle)
+{
+  cmds({"units micro", "atom_style atomic", "region box block -10 10 -10 10 -10 10",
+        "create_box 1 box"});
+  EXPECT_ERROR("bond_style cell/tether", "[Bb]ond_style command when no bonds allowed");
+}
+
+TEST_F(Lmp, PairBadInput)
+{
+  cmds({"units micro", "atom_style atomic", "region box block -10 10 -10 10 -10 10",
+        "create_box 2 box", "mass * 1.0", "create_atoms 1 single 0 0 0"});
+  EXPECT_ERROR("pair_style cell/lj84 2.0", "pair_style cell/lj84.*expected no arguments");
+  cmd("pair_style cell/lj84");
+  EXPECT_ERROR("pair_coeff 1 1 1.0", "pair_coeff cell/lj84.*expected.*f0 r0 \\[gamma\\]");
+  EXPECT_ERROR("pair_coeff 1 1 1.0 0.0", "contact distance r0 must be > 0");
+  EXPECT_ERROR("pair_coeff 1 1 -1.0 1.0", "strength f0 must be >= 0");
+  EXPECT_ERROR("pair_coeff 1 1 1.0 1.0 -2", "contact damping gamma must be >= 0");
+  EXPECT_ERROR("pair_coeff 1 3 1.0 1.0", "Numeric index 3 is out of bounds");
+  cmd("pair_coeff * * 1.0 1.0 0.5");
+  EXPECT_ERROR("run 0", "cell/lj84 with contact damping gamma > 0 requires 'comm_modify vel yes'");
+}
+
+// ---------------------------------------------------------------- plugin guard
+
+TEST(PluginGuard, RefusesForeignLammps)
+{
+  const char *args[] = {"lmp", "-log", "none", "-echo", "none", nullptr};
+  testing::internal::CaptureStdout();
+  auto *l = new LAMMPS(5, (char **) args, MPI_COMM_WORLD);
+  l->input->one(std::string("plugin load ") + CELLMECH_FOREIGN_PLUGIN);
+  std::string out = testing::internal::GetCapturedStdout();
+  std::printf("%s\n", out.c_str());
+  EXPECT_NE(out.find("cellmech plugin NOT loaded"), std::string::npos);
+  EXPECT_NE(out.find("plugin built for '1 Jan 2000'"), std::string::npos);
+  l->input->one("units micro");
+  l->input->one("atom_style molecular");
+  l->input->one("region box block 0 1 0 1 0 1");
+  l->input->one("create_box 1 box bond/types 1");
+  try {
+    l->input->one("bond_style cell/tether");
+    ADD_FAILURE() << "a refused plugin must not register its styles";
+  } catch (LAMMPSException &e) {
+    EXPECT_NE(std::string(e.what()).find("Unrecognized bond style"), std::string::npos);
+  }
+  delete l;
+}
+
+}    // namespace
+
+int main(int argc, char **argv)
+{
+  MPI_Init(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  int rv = RUN_ALL_TESTS();
+  MPI_Finalize();
+  return rv;
+}

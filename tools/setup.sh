@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Set up a fresh Debian 12 machine (as root) for the cellmech LAMMPS plugin:
+#   1. install build dependencies from Debian,
+#   2. obtain LAMMPS 4Feb2025 (Debian 13 source package) unless LAMMPS_SRC is given,
+#   3. build LAMMPS as a shared library with MPI + PLUGIN + MOLECULE (+ SPH, MC for reference runs),
+#      cached outside the repository, keyed by version and options,
+#   4. configure and build the plugin in ./build against that LAMMPS.
+# A second run reuses the cache and takes seconds.
+#
+# Environment:
+#   LAMMPS_SRC      an existing LAMMPS source tree (the directory that holds src/ and cmake/)
+#   LAMMPS_BUILD    an existing LAMMPS CMake build dir (with lmp and liblammps.so) of that tree
+#   CELLMECH_CACHE  cache root (default ~/.cache/cellmech)
+#   SKIP_APT=1      do not install Debian packages
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+LAMMPS_VERSION=20250204
+DEB_VERSION=20250204+dfsg.1-2
+CACHE=${CELLMECH_CACHE:-$HOME/.cache/cellmech}
+JOBS=${JOBS:-$(nproc)}
+log() { printf '[setup] %s\n' "$*"; }
+
+# ---- 1. packages -------------------------------------------------------------------------------
+pkgs=(build-essential cmake pkg-config git openmpi-bin libopenmpi-dev libeigen3-dev libfftw3-dev
+  libgtest-dev libpng-dev zlib1g-dev python3-numpy python3-scipy python3-matplotlib dpkg-dev)
+if [ "${SKIP_APT:-0}" != 1 ]; then
+  missing=()
+  for p in "${pkgs[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
+  if [ ${#missing[@]} -gt 0 ]; then
+    log "installing: ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  fi
+fi
+
+# ---- 2. LAMMPS source --------------------------------------------------------------------------
+if [ -z "${LAMMPS_SRC:-}" ]; then
+  LAMMPS_SRC=$CACHE/src/lammps-$LAMMPS_VERSION
+  if [ ! -f "$LAMMPS_SRC/src/lammps.h" ]; then
+    mkdir -p "$CACHE/src"
+    list=/etc/apt/sources.list.d/cellmech-trixie-src.sources
+    if [ ! -f $list ]; then
+      log "adding deb-src entry for Debian trixie"
+      cat >$list <<SRC
+Types: deb-src
+URIs: http://deb.debian.org/debian
+Suites: trixie
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SRC
+      apt-get update -qq
+    fi
+    log "downloading LAMMPS source package $DEB_VERSION"
+    (cd "$CACHE/src" && apt-get source --download-only --tar-only "lammps=$DEB_VERSION" >/dev/null)
+    tarball=$(ls "$CACHE"/src/lammps_*.orig.tar.* | head -n 1)
+    tmp=$CACHE/src/unpack.$$
+    mkdir -p "$tmp" && tar -xf "$tarball" -C "$tmp"
+    mv "$tmp"/* "$LAMMPS_SRC" && rmdir "$tmp"
+  fi
+fi
+[ -f "$LAMMPS_SRC/src/lammps.h" ] || { echo "LAMMPS_SRC=$LAMMPS_SRC has no src/lammps.h" >&2; exit 1; }
+
+# ---- 3. LAMMPS build (cached) ------------------------------------------------------------------
+lmp_opts=(-DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on -DBUILD_MPI=on -DBUILD_OMP=off
+  -DLAMMPS_SIZES=smallbig -DPKG_PLUGIN=on -DPKG_MOLECULE=on -DPKG_SPH=on -DPKG_MC=on
+  -DWITH_PNG=on -DWITH_JPEG=off -DWITH_FFMPEG=off -DWITH_GZIP=on -DFFT=KISS)
+if [ -z "${LAMMPS_BUILD:-}" ]; then
+  key=$(printf '%s ' "$LAMMPS_VERSION" "$LAMMPS_SRC" "${lmp_opts[@]}" | sha1sum | cut -c1-10)
+  LAMMPS_BUILD=$CACHE/build/lammps-$LAMMPS_VERSION-$key
+  if [ ! -x "$LAMMPS_BUILD/lmp" ] || [ ! -f "$LAMMPS_BUILD/.complete" ]; then
+    log "building LAMMPS in $LAMMPS_BUILD (about 7 minutes on 2 cores)"
+    mkdir -p "$LAMMPS_BUILD"
+    cmake -S "$LAMMPS_SRC/cmake" -B "$LAMMPS_BUILD" "${lmp_opts[@]}" >"$LAMMPS_BUILD/configure.log"
+    cmake --build "$LAMMPS_BUILD" -j "$JOBS" >"$LAMMPS_BUILD/build.log" 2>&1 ||
+      { tail -n 40 "$LAMMPS_BUILD/build.log"; exit 1; }
+    touch "$LAMMPS_BUILD/.complete"
+  else
+    log "reusing cached LAMMPS build $LAMMPS_BUILD"
+  fi
+fi
+# The lmp we use must resolve its own liblammps, not some other one on the system.
+if ! ldd "$LAMMPS_BUILD/lmp" | grep -q "$LAMMPS_BUILD/liblammps"; then
+  echo "error: $LAMMPS_BUILD/lmp does not load $LAMMPS_BUILD/liblammps.so:" >&2
+  ldd "$LAMMPS_BUILD/lmp" | grep -i lammps >&2
+  exit 1
+fi
+
+# ---- 4. the plugin -----------------------------------------------------------------------------
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release \
+  -DLAMMPS_SOURCE_DIR="$LAMMPS_SRC/src" -DLAMMPS_BINARY_DIR="$LAMMPS_BUILD" >"$here/build-configure.log" ||
+  { cat "$here/build-configure.log"; exit 1; }
+cmake --build "$here/build" -j "$JOBS"
+log "LAMMPS: $LAMMPS_BUILD/lmp"
+log "plugin: $here/build/cellmechplugin.so"
