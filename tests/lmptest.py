@@ -1,0 +1,75 @@
+"""Helpers for the script tests: run lmp with the cellmech plugin, read its outputs.
+
+Environment (set by CTest, see tests/CMakeLists.txt): LMP, CELLMECH_PLUGIN, CELLMECH_ROOT, MPIEXEC.
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+ROOT = os.environ.get("CELLMECH_ROOT", os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+LMP = os.environ.get("LMP", "lmp")
+PLUGIN = os.environ.get("CELLMECH_PLUGIN", os.path.join(ROOT, "build", "cellmechplugin.so"))
+MPIEXEC = os.environ.get("MPIEXEC") or "mpirun"
+INPUTS = os.path.join(ROOT, "lammps-inputs")
+CELLGEN = os.path.join(ROOT, "tools", "cellgen.py")
+
+failures = []
+
+
+def workdir(name):
+    d = os.path.join(os.getcwd(), "work-" + name)
+    os.makedirs(d, exist_ok=True)
+    return d
+
+
+def cellgen(*args, cwd):
+    subprocess.run([sys.executable, CELLGEN, *map(str, args)], cwd=cwd, check=True,
+                   stdout=subprocess.DEVNULL)
+
+
+def lmp(input_file, cwd, nprocs=1, variables=None, check=True, log="log.lammps"):
+    """Run lmp on input_file (path, or text written to cwd/in.test); return (rc, log text)."""
+    if "\n" in input_file:
+        path = os.path.join(cwd, "in.test")
+        with open(path, "w") as f:
+            f.write(input_file)
+        input_file = path
+    cmd = [LMP, "-in", input_file, "-log", log, "-screen", "none"]
+    for k, v in (variables or {}).items():
+        cmd += ["-var", k, str(v)]
+    if nprocs > 1:
+        cmd = [MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
+    env = dict(os.environ, LAMMPS_PLUGIN_PATH=os.path.dirname(PLUGIN))
+    p = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True)
+    text = open(os.path.join(cwd, log)).read() if os.path.exists(os.path.join(cwd, log)) else ""
+    if check and p.returncode != 0:
+        print(text[-3000:], p.stdout[-2000:], p.stderr[-2000:])
+        raise SystemExit(f"lmp failed (rc {p.returncode}): {' '.join(cmd)}")
+    return p.returncode, text
+
+
+def load(path):
+    """Numeric table of a fix ave/time or print file (comment lines '#')."""
+    return np.loadtxt(path, comments="#", ndmin=2)
+
+
+def check(name, ok, detail=""):
+    print(f"{'PASS' if ok else 'FAIL'}  {name}  {detail}")
+    if not ok:
+        failures.append(name)
+
+
+def finish():
+    if failures:
+        print(f"\n{len(failures)} check(s) failed: {', '.join(failures)}")
+        sys.exit(1)
+    print("\nall checks passed")
+
+
+def performance(logtext):
+    m = re.findall(r"Performance: .*", logtext)
+    return m[-1] if m else ""
