@@ -21,7 +21,8 @@ Usage:
   cellgen.py cell -o cell.data [--level 4] [--radius 30] [--nfluid 3500 | --spacing S | --nfluid 0]
                   [--centres "0,0,0;70,0,0"] [--rho0 1] [--wall-mass 1.3e4 | --wall-areal-density X]
                   [--pad 10] [--box xlo xhi ylo yhi zlo zhi] [--units micro|si]
-  cellgen.py sheet -o sheet.data [--nx 20 --ny 20] [--bond 2.5] [--thickness 0.126] [--rho-s 8956]
+  cellgen.py sheet -o sheet.data [--nx 20 --ny 20] [--bond 2.5] [--orient x|y] [--thickness 0.126]
+                   [--rho-s 8.956]
 """
 import argparse
 import math
@@ -223,13 +224,17 @@ def build_sheet(args):
                 if right is not None and upr is not None:
                     tris.append((p, right, upr))
     pts = np.array(pts)
+    if args.orient == "y":
+        # bonds along y: rotate by 90 degrees so that an X stretch pulls across the bond rows
+        pts = np.column_stack([-pts[:, 1], pts[:, 0], pts[:, 2]])
+        pts[:, 0] -= pts[:, 0].min()
     # node mass: areal density rho_s t0 over the node's share of the sheet area
     m = args.rho_s * args.thickness * (math.sqrt(3.0) / 2.0) * a * a
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     L = max(hi[0] - lo[0], hi[1] - lo[1])
     box = [lo[0] - L, hi[0] + L, lo[1] - L, hi[1] + L, -L, L]
     atoms = [(1, 1, *p) for p in pts]
-    title = f"cellgen sheet: {args.nx}x{args.ny} nodes, bond {a:g}"
+    title = f"cellgen sheet: {args.nx}x{args.ny} nodes, bond {a:g}, bonds along {args.orient}"
     write_data(args.output, title, box, atoms, bonds, tris, [m], pts)
     print(title, f"{len(bonds)} tethers, {len(tris)} triangles, node mass {m:.6g}")
 
@@ -259,6 +264,7 @@ def main(argv=None):
     s.add_argument("--ny", type=int, default=20)
     s.add_argument("--bond", type=float, default=2.5)
     s.add_argument("--thickness", type=float, default=0.126)
+    s.add_argument("--orient", choices=("x", "y"), default="x", help="direction of the bond rows")
     s.add_argument("--rho-s", type=float, default=8.956, help="wall density (pg/um^3)")
     args = p.parse_args(argv)
     (build_cells if args.what == "cell" else build_sheet)(args)
