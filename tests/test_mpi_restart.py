@@ -1,0 +1,75 @@
+"""Issue 2, check 7: the same forces on 1 and 2 MPI ranks at step 0, and a run continued from
+write_restart / read_restart that matches an uninterrupted run.
+
+System: lammps-inputs/in.plates on a level-3 wall with fluid inside (8-4 fluid-wall and wall-wall
+contacts), perturbed by a random displacement and random velocities (so tether damping and contact
+damping act), plates moving. Tolerances: forces on different rank counts differ only by the order
+of summation (1e-12 of the largest force); the restarted run rebuilds its neighbour lists at the
+same step as the uninterrupted one (which is split into two `run` commands), so positions agree
+to round-off after 100 steps (1e-10 of the box size).
+"""
+import os
+
+import numpy as np
+
+import lmptest as T
+
+SETUP = """
+include         {inputs}/in.plates
+"""
+PERTURB = """
+displace_atoms  all random 0.3 0.3 0.3 4711 units box
+velocity        all create 1.0e6 2024 dist gaussian mom yes rot yes
+pair_coeff      * * 2.0e5 2.4 5.0
+"""
+
+
+def dump_table(path):
+    rows = [l.split() for l in open(path).read().splitlines()[9:]]
+    a = np.array(rows, float)
+    return a[np.argsort(a[:, 0])]
+
+
+def main():
+    d = T.workdir("mpi-restart")
+    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 400, cwd=d)
+    common = dict(data="cell.data", nsteps=0, vplate=2.0, zbot0=-30.2, ztop0=30.2, every=1000)
+    step0 = SETUP.format(inputs=T.INPUTS) + PERTURB + """
+run             0
+write_dump      all custom f0-${np}.dump id fx fy fz modify sort id format float %.17g
+"""
+    forces = {}
+    for np_ in (1, 2):
+        T.lmp(step0, cwd=d, nprocs=np_, variables=dict(common, np=np_), log=f"log.step0-{np_}")
+        forces[np_] = dump_table(f"{d}/f0-{np_}.dump")
+    fmax = np.abs(forces[1][:, 1:]).max()
+    err = np.abs(forces[1][:, 1:] - forces[2][:, 1:]).max() / fmax
+    print(f"step 0: {len(forces[1])} atoms, max |f| = {fmax:.4g} nN, 1 vs 2 ranks max diff {err:.2e}")
+    T.check("same atoms on 1 and 2 ranks", np.array_equal(forces[1][:, 0], forces[2][:, 0]))
+    T.check("step-0 forces on 1 and 2 ranks agree to round-off", err < 1e-12, f"{err:.1e}")
+
+    full = SETUP.format(inputs=T.INPUTS) + PERTURB + """
+run             100
+write_restart   half.restart
+run             100
+write_dump      all custom full.dump id x y z vx vy vz modify sort id format float %.17g
+"""
+    T.lmp(full, cwd=d, variables=common, log="log.full")
+    cont = SETUP.format(inputs=T.INPUTS) + """
+pair_coeff      * * 2.0e5 2.4 5.0
+run             100
+write_dump      all custom cont.dump id x y z vx vy vz modify sort id format float %.17g
+"""
+    T.lmp(cont, cwd=d, variables=dict(common, restart="half.restart"), log="log.cont")
+    a, b = dump_table(f"{d}/full.dump"), dump_table(f"{d}/cont.dump")
+    dx = np.abs(a[:, 1:4] - b[:, 1:4]).max()
+    dv = np.abs(a[:, 4:7] - b[:, 4:7]).max() / np.abs(a[:, 4:7]).max()
+    moved = np.abs(a[:, 1:4]).max()
+    print(f"restart: max position diff {dx:.2e} um, velocity diff {dv:.2e} (relative)")
+    T.check("restart continues the run: positions", dx < 1e-10 * moved, f"{dx:.1e} um")
+    T.check("restart continues the run: velocities", dv < 1e-9, f"{dv:.1e}")
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()
