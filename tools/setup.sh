@@ -91,5 +91,12 @@ cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release \
   -DLAMMPS_SOURCE_DIR="$LAMMPS_SRC/src" -DLAMMPS_BINARY_DIR="$LAMMPS_BUILD" >"$here/build-configure.log" ||
   { cat "$here/build-configure.log"; exit 1; }
 cmake --build "$here/build" -j "$JOBS"
+# environment for users and scripts: `source build/cellmech-env.sh`, then `lmp -in ...`
+cat >"$here/build/cellmech-env.sh" <<ENV
+export LMP="$LAMMPS_BUILD/lmp"
+export LAMMPS_PLUGIN_PATH="$here/build"
+export PATH="$LAMMPS_BUILD:\$PATH"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+ENV
 log "LAMMPS: $LAMMPS_BUILD/lmp"
 log "plugin: $here/build/cellmechplugin.so"
