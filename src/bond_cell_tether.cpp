@@ -31,7 +31,7 @@ static constexpr char REF_NAME[] = "cellref";
 
 BondCellTether::BondCellTether(LAMMPS *_lmp) :
     Bond(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1),
-    lmax(0.0), nbroken_local(0)
+    lmax(0.0), nbroken_local(0), checked(0)
 {
   born_matrix_enable = 0;
 }
@@ -92,6 +92,12 @@ void BondCellTether::compute(int eflag, int vflag)
                  "reference positions set and communicated to ghosts (ghost yes)?",
                  tag[i1], tag[i2]);
     const double lam = r / l0;
+    if (!checked && (lam > 5.0 || lam < 0.2))
+      error->one(FLERR,
+                 "Bond style cell/tether: tether {}-{} is stretched {:.4g} times its rest length at "
+                 "the start of a run; the reference positions d2_cellref are wrong for it (is the "
+                 "fix property/atom defined with 'ghost yes'?)",
+                 tag[i1], tag[i2], lam);
 
     // Failure is tension only: a compressed tether never breaks. A broken bond keeps its
     // place in the topology with type 0, as bond style quartic does, so it is skipped here
@@ -129,6 +135,7 @@ void BondCellTether::compute(int eflag, int vflag)
     }
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
   }
+  checked = 1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -205,6 +212,7 @@ void BondCellTether::coeff(int narg, char **arg)
 
 void BondCellTether::init_style()
 {
+  checked = 0;
   int flag, cols;
   iref = atom->find_custom(REF_NAME, flag, cols);
   if (iref < 0 || flag != 1 || cols != 3)

@@ -31,14 +31,18 @@ class BondCellTether : public Bond {
   double single(int, double, int, int, double &) override;
   void *extract(const char *, int &) override;
 
+  // rest length of the tether between atoms i and j (local or ghost): distance of their
+  // reference positions
+  double rest_length(int i, int j) const;
+
  protected:
   double *G, *t0, *gamma, *lamf;
   int iref;             // index of the reference-position array d2_cellref in atom->darray
   double lmax;          // largest rest length, for the bond-extent check of LAMMPS
   bigint nbroken_local;    // tethers broken on this rank by stretch > lamf
+  int checked;             // reference positions checked for plausibility in this run
 
   void allocate();
-  double rest_length(int i, int j) const;
 };
 
 }    // namespace LAMMPS_NS

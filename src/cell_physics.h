@@ -101,6 +101,76 @@ inline double sheet_force_A2(double G, double L0, double t0, double lam)
   return G * L0 * t0 * (lam * lam - 1.0 / lam) * std::sqrt(lam);
 }
 
+
+/* ---------------------------------------------------------------------
+   SPH protoplasm (Eqs. 3-10)
+------------------------------------------------------------------------ */
+
+// Cubic-spline kernel of smoothing length s, support 2s. Eq. 3 (unit integral) fixes the
+// prefactor at 3 / (2 pi s^3) for this bracket; the 2 / (3 pi s^3) printed in Eq. 4 does not
+// integrate to one (MODEL.md, section 1).
+inline double kernel_w(double r, double s)
+{
+  const double q = r / s;
+  const double norm = 3.0 / (2.0 * M_PI * s * s * s);
+  if (q < 1.0) return norm * (2.0 / 3.0 - q * q + 0.5 * q * q * q);
+  if (q < 2.0) {
+    const double u = 2.0 - q;
+    return norm * u * u * u / 6.0;
+  }
+  return 0.0;
+}
+
+// dW/dr; the gradient is dW/dr times the unit vector r_ij / r.
+inline double kernel_dwdr(double r, double s)
+{
+  const double q = r / s;
+  const double norm = 3.0 / (2.0 * M_PI * s * s * s * s);
+  if (q < 1.0) return norm * (-2.0 * q + 1.5 * q * q);
+  if (q < 2.0) {
+    const double u = 2.0 - q;
+    return -norm * 0.5 * u * u;
+  }
+  return 0.0;
+}
+
+// Tait equation of state with background turgor P0 (Eq. 6), kappa = rho0 c^2 / 7.
+inline double tait_pressure(double rho, double rho0, double c, double P0)
+{
+  const double x = rho / rho0;
+  const double x2 = x * x;
+  const double x7 = x2 * x2 * x2 * x;
+  return P0 + rho0 * c * c / 7.0 * (x7 - 1.0);
+}
+
+// Osmotic mass rate of one fluid particle (Eq. 10): dm/dt = -(A_c L_p rho / N_f)(P + Pi), with
+// Pi < 0 the osmotic potential; water flows in while P < -Pi.
+inline double osmotic_mass_rate(double area, double Lp, double rho, int nfluid, double P, double Pi)
+{
+  return -area * Lp * rho / nfluid * (P + Pi);
+}
+
+/* ---------------------------------------------------------------------
+   Triangulated closed surfaces
+------------------------------------------------------------------------ */
+
+// Signed solid angle of triangle (a, b, c) seen from the origin (van Oosterom & Strackee 1983).
+// Summed over a closed outward-oriented mesh it is 4 pi for a point inside, 0 outside.
+inline double solid_angle(const double *a, const double *b, const double *c)
+{
+  const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  const double bxc[3] = {b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2],
+                         b[0] * c[1] - b[1] * c[0]};
+  const double num = a[0] * bxc[0] + a[1] * bxc[1] + a[2] * bxc[2];
+  const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const double ac = a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
+  const double bc = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
+  const double den = la * lb * lc + ab * lc + ac * lb + bc * la;
+  return 2.0 * std::atan2(num, den);
+}
+
 }    // namespace CellPhysics
 
 #endif

@@ -13,7 +13,11 @@
 #include "version.h"
 
 #include "bond_cell_tether.h"
+#include "compute_cell_props.h"
+#include "fix_cell_fluid.h"
 #include "pair_cell_lj84.h"
+#include "pair_cell_sph.h"
+#include "pair_cell_virtual.h"
 
 using namespace LAMMPS_NS;
 
@@ -25,6 +29,26 @@ static Bond *bond_cell_tether_creator(LAMMPS *lmp)
 static Pair *pair_cell_lj84_creator(LAMMPS *lmp)
 {
   return new PairCellLJ84(lmp);
+}
+
+static Pair *pair_cell_sph_creator(LAMMPS *lmp)
+{
+  return new PairCellSPH(lmp);
+}
+
+static Pair *pair_cell_virtual_creator(LAMMPS *lmp)
+{
+  return new PairCellVirtual(lmp);
+}
+
+static Fix *fix_cell_fluid_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixCellFluid(lmp, argc, argv);
+}
+
+static Compute *compute_cell_props_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new ComputeCellProps(lmp, argc, argv);
 }
 
 extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
@@ -59,5 +83,27 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "cell/lj84";
   plugin.info = "cellmech 8-4 excluded-volume repulsion with contact damping";
   plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_cell_lj84_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "cell/sph";
+  plugin.info = "cellmech SPH protoplasm (Tait, Morris viscosity, continuity)";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_cell_sph_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "cell/virtual";
+  plugin.info = "cellmech virtual particles at the wall triangles' barycentres";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_cell_virtual_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "cell/fluid";
+  plugin.info = "cellmech density and osmotic mass integration of the protoplasm";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_cell_fluid_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "compute";
+  plugin.name = "cell/props";
+  plugin.info = "cellmech per-cell volume, area, pressure, stretch, equatorial force, leaks";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_cell_props_creator;
   (*register_plugin)(&plugin, lmp);
 }

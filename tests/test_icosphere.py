@@ -56,8 +56,8 @@ def main():
     T.cellgen("cell", "-o", "two.data", "--level", 3, "--nfluid", 500, "--centres",
               "0,0,0;80,0,0", "--rho0", rho0, "--wall-mass", M, cwd=d)
     lines = open(f"{d}/two.data").read().split("\n")
-    sec = {name: i for i, name in enumerate(lines) if name.strip() in
-           ("Masses", "Atoms # molecular", "Bonds", "Angles", "CellRef")}
+    sec = {name.split("#")[0].strip(): i for i, name in enumerate(lines)
+           if name.split("#")[0].strip() in ("Masses", "Atoms", "Bonds", "Angles", "cell")}
 
     def block(name):
         out, i = [], sec[name] + 2
@@ -67,8 +67,9 @@ def main():
         return out
 
     masses = {int(t): float(m) for t, m in block("Masses")}
-    atoms = np.array(block("Atoms # molecular"), float)
-    refs = np.array(block("CellRef"), float)
+    atoms = np.array(block("Atoms"), float)
+    percell = np.array(block("cell"), float)
+    refs = percell[:, [0, 4, 5, 6]]
     nodes, tri, edges = cellgen.icosphere(3)
     _, vmesh = cellgen.mesh_area_volume(nodes * R, tri)
     for mol, centre in ((1, (0, 0, 0)), (2, (80, 0, 0))):
@@ -85,6 +86,9 @@ def main():
         T.check(f"cell {mol}: fluid mass = rho0 * mesh volume", abs(mf / (rho0 * vmesh) - 1) < 1e-12,
                 f"{mf:.6g} vs {rho0 * vmesh:.6g}")
     T.check("reference positions = positions", np.array_equal(refs[:, 1:], atoms[:, 3:6]))
+    T.check("per-atom masses = type masses, fluid density rho0",
+            np.array_equal(percell[:, 1], [masses[int(t)] for t in atoms[:, 2]])
+            and np.all(percell[atoms[:, 2] == 2, 2] == rho0) and np.all(percell[:, 3] == 0))
     T.check("bonds and angles of both cells", len(block("Bonds")) == 2 * len(edges)
             and len(block("Angles")) == 2 * len(tri))
     T.finish()

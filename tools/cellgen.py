@@ -7,9 +7,10 @@ Geometry of one cell (Van Liedekerke et al. 2010, MODEL.md section 1):
     triangles = LAMMPS angles (a, b, c) ordered so that (b-a)x(c-a) points OUT of the cell. Angles
     travel with atoms through MPI migration and restart files, which is what later styles need.
   * fluid: a cubic lattice clipped to the inside of the wall (as in the paper), by count or spacing.
-  * reference positions: every atom's rest position in a `CellRef` section, read into
-    `fix property/atom d2_cellref 3 ghost yes`; bond style cell/tether takes each tether's rest
-    length from them.
+  * per-atom cell data in a `cell` section (mass, density, density rate, rest position), read into
+    `fix cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes` with
+    `read_data FILE fix cell NULL cell`; bond style cell/tether takes each tether's rest length
+    from the rest positions, pair style cell/sph the fluid's mass and density.
 Masses come from physical inputs: fluid density rho0 times the wall volume, and the wall mass
 (total, or areal density times the sphere area). Units are LAMMPS `units micro` (um, pg, us)
 unless --units si is given (m, kg, s).
@@ -106,8 +107,12 @@ def fluid_by_count(radius, nfluid, inset):
 # ---------------------------------------------------------------------------------- data file
 
 
-def write_data(path, title, box, atoms, bonds, angles, masses, refs):
-    """atoms: list of (mol, type, x, y, z); bonds/angles 0-based atom indices."""
+def write_data(path, title, box, atoms, bonds, angles, masses, refs, rho):
+    """atoms: list of (mol, type, x, y, z); bonds/angles 0-based atom indices; rho per atom.
+
+    The `cell` section (named like the fix, as write_data names it) holds, per atom, the values of
+      fix ID all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+    in that order: mass, density, density rate (0), reference position."""
     with open(path, "w") as f:
         f.write(f"# {title}\n\n")
         f.write(f"{len(atoms)} atoms\n{len(bonds)} bonds\n{len(angles)} angles\n")
@@ -127,15 +132,15 @@ def write_data(path, title, box, atoms, bonds, angles, masses, refs):
             f.write("\nAngles\n\n")
             for k, (a, b, c) in enumerate(angles, 1):
                 f.write(f"{k} 1 {a + 1} {b + 1} {c + 1}\n")
-        f.write("\nCellRef\n\n")
-        for i, (x, y, z) in enumerate(refs, 1):
-            f.write(f"{i} {x:.15g} {y:.15g} {z:.15g}\n")
+        f.write("\ncell # rmass d_rho d_drho d2_cellref[1] d2_cellref[2] d2_cellref[3]\n\n")
+        for i, ((mol, typ, *_), (x, y, z), r) in enumerate(zip(atoms, refs, rho), 1):
+            f.write(f"{i} {masses[typ - 1]:.15g} {r:.15g} 0 {x:.15g} {y:.15g} {z:.15g}\n")
 
 
 UNITS = {
     # length, mass per unit (kg), defaults: radius, rho0, wall mass (paper, MODEL.md sec. 2)
-    "micro": dict(radius=30.0, rho0=1.0, wall_mass=1.3e4),
-    "si": dict(radius=30e-6, rho0=1000.0, wall_mass=1.3e-11),
+    "micro": dict(radius=30.0, rho0=1.0, wall_mass=1.3e4, pad=10.0),
+    "si": dict(radius=30e-6, rho0=1000.0, wall_mass=1.3e-11, pad=10e-6),
 }
 
 
@@ -185,12 +190,14 @@ def build_cells(args):
     if args.box:
         box = args.box
     else:
-        lo, hi = pts.min(axis=0) - args.pad, pts.max(axis=0) + args.pad
+        pad = args.pad if args.pad is not None else d["pad"]
+        lo, hi = pts.min(axis=0) - pad, pts.max(axis=0) + pad
         box = [lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]]
     title = (f"cellgen cell: {len(centres)} cell(s), level {args.level} ({nw} wall nodes), "
              f"{nf} fluid per cell, R {R:g}, spacing {spacing:.6g}, rho0 {rho0:g}, "
              f"wall mass {wall_mass:.6g}, units {args.units}")
-    write_data(args.output, title, box, atoms, bonds, angles, [m_wall, m_fluid], refs)
+    rho = [rho0 if a[1] == 2 else 0.0 for a in atoms]
+    write_data(args.output, title, box, atoms, bonds, angles, [m_wall, m_fluid], refs, rho)
     print(title)
     print(f"wall node mass {m_wall:.6g}, fluid particle mass {m_fluid:.6g}, "
           f"mesh area {area:.6g}, mesh volume {volume:.6g}, mean tether {mean_edge:.6g}")
@@ -235,7 +242,7 @@ def build_sheet(args):
     box = [lo[0] - L, hi[0] + L, lo[1] - L, hi[1] + L, -L, L]
     atoms = [(1, 1, *p) for p in pts]
     title = f"cellgen sheet: {args.nx}x{args.ny} nodes, bond {a:g}, bonds along {args.orient}"
-    write_data(args.output, title, box, atoms, bonds, tris, [m], pts)
+    write_data(args.output, title, box, atoms, bonds, tris, [m], pts, [0.0] * len(atoms))
     print(title, f"{len(bonds)} tethers, {len(tris)} triangles, node mass {m:.6g}")
 
 
@@ -255,7 +262,7 @@ def main(argv=None):
     w = c.add_mutually_exclusive_group()
     w.add_argument("--wall-mass", type=float, help="total wall mass of a cell (default 1.3e4 pg)")
     w.add_argument("--wall-areal-density", type=float, help="rho_s t0 (mass per wall area)")
-    c.add_argument("--pad", type=float, default=10.0, help="box padding around the cells")
+    c.add_argument("--pad", type=float, help="box padding around the cells (10 um)")
     c.add_argument("--box", type=float, nargs=6)
     c.add_argument("--units", choices=sorted(UNITS), default="micro")
     s = sub.add_parser("sheet", help="flat triangular tether sheet (Appendix 1)")

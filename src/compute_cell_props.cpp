@@ -1,0 +1,296 @@
+/* ----------------------------------------------------------------------
+   cellmech: compute cell/props
+
+   compute ID group cell/props [normal nx ny nz] [leaks yes|no]
+
+   Global array, row m = cell (molecule ID) m:
+     1 volume (divergence theorem over the wall triangles)  2 wall area
+     3 mean fluid pressure  4 fluid mass  5 number of fluid particles
+     6 mean and 7 max tether stretch l/l0
+     8 equatorial force: net tether force across the plane through the
+       cell centre with the given normal (Eq. 23), positive in tension
+     9 fluid particles outside their own wall (winding number of the
+       closed wall mesh)  10-12 cell centre (mean of the wall nodes)
+   Triangles are the angles of the topology, counted once (newton_bond on).
+   Fluid are atoms of the types that pair cell/sph treats as fluid.
+------------------------------------------------------------------------- */
+
+#include "compute_cell_props.h"
+
+#include "atom.h"
+#include "bond.h"
+#include "bond_cell_tether.h"
+#include "cell_physics.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "pair_cell_sph.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace CellPhysics;
+
+ComputeCellProps::ComputeCellProps(LAMMPS *_lmp, int narg, char **arg) :
+    Compute(_lmp, narg, arg), leaks(1), ncells(0), sph(nullptr), tether(nullptr)
+{
+  normal[0] = normal[1] = 0.0;
+  normal[2] = 1.0;
+  int iarg = 3;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "normal") == 0) {
+      if (iarg + 4 > narg)
+        error->all(FLERR, "compute cell/props: 'normal' expects three components nx ny nz");
+      double len = 0.0;
+      for (int d = 0; d < 3; d++) {
+        normal[d] = utils::numeric(FLERR, arg[iarg + 1 + d], false, lmp);
+        len += normal[d] * normal[d];
+      }
+      if (len <= 0.0) error->all(FLERR, "compute cell/props: 'normal' must not be zero");
+      for (int d = 0; d < 3; d++) normal[d] /= sqrt(len);
+      iarg += 4;
+    } else if (strcmp(arg[iarg], "leaks") == 0) {
+      if (iarg + 2 > narg) error->all(FLERR, "compute cell/props: 'leaks' expects yes or no");
+      leaks = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    } else
+      error->all(FLERR, "Unknown keyword '{}' for compute cell/props: expected 'normal' or 'leaks'",
+                 arg[iarg]);
+  }
+  if (!atom->molecule_flag)
+    error->all(FLERR, "Compute cell/props requires molecule IDs (one per cell): atom_style molecular");
+  array_flag = 1;
+  size_array_cols = NCOL;
+  size_array_rows = 0;
+  size_array_rows_variable = 1;
+  extarray = 0;
+}
+
+ComputeCellProps::~ComputeCellProps()
+{
+  memory->destroy(array);
+}
+
+void ComputeCellProps::init()
+{
+  sph = dynamic_cast<PairCellSPH *>(force->pair_match("^cell/sph", 0));
+  tether = dynamic_cast<BondCellTether *>(force->bond_match("cell/tether"));
+  if (!tether) error->all(FLERR, "Compute cell/props requires bond style cell/tether");
+  if (!force->newton_bond)
+    error->all(FLERR, "Compute cell/props requires newton_bond on (each bond and triangle once)");
+}
+
+void ComputeCellProps::allocate(int n)
+{
+  if (n == ncells && array) return;
+  memory->destroy(array);
+  ncells = n;
+  memory->create(array, MAX(ncells, 1), NCOL, "cell/props:array");
+  size_array_rows = ncells;
+}
+
+/* ----------------------------------------------------------------------
+   centre of each cell: mean of its unwrapped wall nodes (atoms in bonds)
+------------------------------------------------------------------------- */
+
+void ComputeCellProps::centres(std::vector<double> &c)
+{
+  std::vector<double> local(4 * (ncells + 1), 0.0), all(4 * (ncells + 1));
+  double **x = atom->x;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const tagint m = atom->molecule[i];
+    // wall nodes: bonded atoms of the cell
+    if (m < 1 || m > ncells || (sph && sph->is_fluid(atom->type[i])) || atom->nspecial[i][0] == 0)
+      continue;
+    double xu[3];
+    domain->unmap(x[i], atom->image[i], xu);
+    for (int d = 0; d < 3; d++) local[4 * m + d] += xu[d];
+    local[4 * m + 3] += 1.0;
+  }
+  MPI_Allreduce(local.data(), all.data(), 4 * (ncells + 1), MPI_DOUBLE, MPI_SUM, world);
+  c.assign(3 * (ncells + 1), 0.0);
+  for (int m = 1; m <= ncells; m++)
+    if (all[4 * m + 3] > 0)
+      for (int d = 0; d < 3; d++) c[3 * m + d] = all[4 * m + d] / all[4 * m + 3];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeCellProps::compute_array()
+{
+  invoked_array = update->ntimestep;
+
+  tagint maxmol_local = 0, maxmol = 0;
+  for (int i = 0; i < atom->nlocal; i++) maxmol_local = MAX(maxmol_local, atom->molecule[i]);
+  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  allocate((int) maxmol);
+
+  std::vector<double> c;
+  centres(c);
+
+  // sums per cell: volume, area, pressure, mass, nfluid, stretch sum, nbonds, feq | max stretch
+  const int NS = 8;
+  std::vector<double> local(NS * (ncells + 1), 0.0), all(NS * (ncells + 1));
+  std::vector<double> lmax_local(ncells + 1, 0.0), lmax_all(ncells + 1);
+  double **x = atom->x;
+  tagint *molecule = atom->molecule;
+
+  auto rel = [&](int i, tagint m, double *out) {
+    for (int d = 0; d < 3; d++) out[d] = x[i][d] - c[3 * m + d];
+    domain->minimum_image(out[0], out[1], out[2]);
+  };
+
+  int **anglelist = neighbor->anglelist;
+  for (int n = 0; n < neighbor->nanglelist; n++) {
+    if (anglelist[n][3] <= 0) continue;
+    const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
+    const tagint m = molecule[b];
+    if (m < 1 || m > ncells) continue;
+    double pa[3], pb[3], pc[3];
+    rel(a, m, pa);
+    rel(b, m, pb);
+    rel(cc, m, pc);
+    const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+    const double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+    const double cr[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                          u[0] * w[1] - u[1] * w[0]};
+    local[NS * m + 0] += (pa[0] * cr[0] + pa[1] * cr[1] + pa[2] * cr[2]) / 6.0;
+    local[NS * m + 1] += 0.5 * sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+  }
+
+  if (sph) {
+    const double *rho = sph->rho_array();
+    for (int i = 0; i < atom->nlocal; i++) {
+      const tagint m = molecule[i];
+      if (m < 1 || m > ncells || !sph->is_fluid(atom->type[i]) || !(atom->mask[i] & groupbit))
+        continue;
+      local[NS * m + 2] += sph->pressure(atom->type[i], rho[i]);
+      local[NS * m + 3] += atom->rmass[i];
+      local[NS * m + 4] += 1.0;
+    }
+  }
+
+  int **bondlist = neighbor->bondlist;
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1], type = bondlist[n][2];
+    if (type <= 0) continue;
+    const tagint m = molecule[i1];
+    if (m < 1 || m > ncells) continue;
+    double del[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
+    const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+    const double lam = sqrt(rsq) / tether->rest_length(i1, i2);
+    local[NS * m + 5] += lam;
+    local[NS * m + 6] += 1.0;
+    lmax_local[m] = MAX(lmax_local[m], lam);
+    double p1[3], p2[3];
+    rel(i1, m, p1);
+    rel(i2, m, p2);
+    const double s1 = p1[0] * normal[0] + p1[1] * normal[1] + p1[2] * normal[2];
+    const double s2 = p2[0] * normal[0] + p2[1] * normal[1] + p2[2] * normal[2];
+    // the hemisphere is the nodes with s > 0: a partition even for nodes on the plane
+    if ((s1 > 0.0) != (s2 > 0.0)) {
+      double fforce;
+      force->bond->single(type, rsq, i1, i2, fforce);
+      // force on the node above the plane from the one below, along -normal: tension > 0
+      const double dn = del[0] * normal[0] + del[1] * normal[1] + del[2] * normal[2];
+      local[NS * m + 7] += (s1 > s2) ? -fforce * dn : fforce * dn;
+    }
+  }
+
+  MPI_Allreduce(local.data(), all.data(), NS * (ncells + 1), MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(lmax_local.data(), lmax_all.data(), ncells + 1, MPI_DOUBLE, MPI_MAX, world);
+
+  for (int m = 1; m <= ncells; m++) {
+    double *row = array[m - 1];
+    const double *s = &all[NS * m];
+    row[VOLUME] = s[0];
+    row[AREA] = s[1];
+    row[PRESSURE] = s[4] > 0 ? s[2] / s[4] : 0.0;
+    row[MASS] = s[3];
+    row[NFLUID] = s[4];
+    row[LAM_MEAN] = s[6] > 0 ? s[5] / s[6] : 0.0;
+    row[LAM_MAX] = lmax_all[m];
+    row[FEQ] = s[7];
+    row[XC] = c[3 * m];
+    row[YC] = c[3 * m + 1];
+    row[ZC] = c[3 * m + 2];
+    row[NLEAK] = 0.0;
+  }
+  if (leaks) count_leaks(c);
+}
+
+/* ----------------------------------------------------------------------
+   fluid outside its own wall: every rank gets all triangles (relative to
+   their cell centre) and sums, for its fluid, the solid angles of its own
+   cell's triangles; 4 pi inside a closed mesh, 0 outside.
+------------------------------------------------------------------------- */
+
+void ComputeCellProps::count_leaks(const std::vector<double> &c)
+{
+  double **x = atom->x;
+  tagint *molecule = atom->molecule;
+  std::vector<double> mine;
+  int **anglelist = neighbor->anglelist;
+  for (int n = 0; n < neighbor->nanglelist; n++) {
+    if (anglelist[n][3] <= 0) continue;
+    const tagint m = molecule[anglelist[n][1]];
+    if (m < 1 || m > ncells) continue;
+    mine.push_back((double) m);
+    for (int k = 0; k < 3; k++) {
+      double p[3];
+      for (int d = 0; d < 3; d++) p[d] = x[anglelist[n][k]][d] - c[3 * m + d];
+      domain->minimum_image(p[0], p[1], p[2]);
+      mine.insert(mine.end(), p, p + 3);
+    }
+  }
+  int nmine = mine.size();
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<double> tris(total);
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, tris.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+
+  // group the triangles by cell
+  const int ntri = total / 10;
+  std::vector<int> start(ncells + 2, 0);
+  for (int t = 0; t < ntri; t++) start[(int) tris[10 * t] + 1]++;
+  for (int m = 1; m <= ncells + 1; m++) start[m] += start[m - 1];
+  std::vector<double> sorted(9 * ntri);
+  std::vector<int> fill(start.begin(), start.end());
+  for (int t = 0; t < ntri; t++) {
+    const int m = (int) tris[10 * t];
+    std::copy(&tris[10 * t + 1], &tris[10 * t + 10], &sorted[9 * fill[m]++]);
+  }
+
+  std::vector<double> out_local(ncells + 1, 0.0), out_all(ncells + 1);
+  for (int i = 0; i < atom->nlocal; i++) {
+    const tagint m = molecule[i];
+    if (m < 1 || m > ncells || !sph || !sph->is_fluid(atom->type[i]) || !(atom->mask[i] & groupbit))
+      continue;
+    double p[3];
+    for (int d = 0; d < 3; d++) p[d] = x[i][d] - c[3 * m + d];
+    domain->minimum_image(p[0], p[1], p[2]);
+    double omega = 0.0;
+    for (int t = start[m]; t < start[m + 1]; t++) {
+      const double *v = &sorted[9 * t];
+      const double a[3] = {v[0] - p[0], v[1] - p[1], v[2] - p[2]};
+      const double b[3] = {v[3] - p[0], v[4] - p[1], v[5] - p[2]};
+      const double cc[3] = {v[6] - p[0], v[7] - p[1], v[8] - p[2]};
+      omega += solid_angle(a, b, cc);
+    }
+    if (omega < 2.0 * M_PI) out_local[m] += 1.0;
+  }
+  MPI_Allreduce(out_local.data(), out_all.data(), ncells + 1, MPI_DOUBLE, MPI_SUM, world);
+  for (int m = 1; m <= ncells; m++) array[m - 1][NLEAK] = out_all[m];
+}

@@ -1,0 +1,274 @@
+/* ----------------------------------------------------------------------
+   cellmech: fix cell/fluid
+
+     drho_i/dt = drho*_i/dt + (rho_i / m_i) dm_i/dt                        (Eq. 9)
+     dm_i/dt   = -(A_c L_p rho_i / N_f)(P_i + Pi)                           (Eq. 10)
+   drho*_i/dt is the continuity rate computed by pair cell/sph. A_c is the
+   current area of the wall of the particle's cell, summed over the wall's
+   triangles (the angles of the topology), and N_f the cell's current
+   number of fluid particles in the fix group. Density and mass advance in
+   two half steps, like velocities in velocity Verlet. Under run_style respa
+   they advance on the outermost level, where the SPH forces are.
+------------------------------------------------------------------------- */
+
+#include "fix_cell_fluid.h"
+
+#include "atom.h"
+#include "cell_physics.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "pair_cell_sph.h"
+#include "respa.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using namespace CellPhysics;
+
+/* ----------------------------------------------------------------------
+   fix ID group cell/fluid Pi value Lp value
+------------------------------------------------------------------------- */
+
+FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
+    Fix(_lmp, narg, arg), Pi(0.0), Lp(0.0), ncells(0), area(nullptr), nfluid(nullptr),
+    flux_local(nullptr), flux_all(nullptr), flux_restart(nullptr), flux_stale(1), sph(nullptr),
+    respa_fix(nullptr), ilevel_respa(0)
+{
+  if (narg != 7)
+    error->all(FLERR,
+               "Illegal fix cell/fluid command: expected 'fix ID group cell/fluid Pi value Lp "
+               "value', got {} arguments after the group",
+               narg - 3);
+  modify_param(narg - 3, &arg[3]);
+  if (!atom->molecule_flag)
+    error->all(FLERR, "Fix cell/fluid requires molecule IDs (one per cell): use atom_style molecular");
+  // positions are left to fix nve & co.; this fix advances density and mass only
+  time_integrate = 0;
+  vector_flag = 1;
+  extvector = 1;
+  global_freq = 1;
+  restart_global = 1;
+  size_vector = 0;
+}
+
+FixCellFluid::~FixCellFluid()
+{
+  memory->destroy(area);
+  memory->destroy(nfluid);
+  memory->destroy(flux_local);
+  memory->destroy(flux_all);
+  memory->destroy(flux_restart);
+}
+
+int FixCellFluid::setmask()
+{
+  return INITIAL_INTEGRATE | FINAL_INTEGRATE | INITIAL_INTEGRATE_RESPA | FINAL_INTEGRATE_RESPA;
+}
+
+/* ----------------------------------------------------------------------
+   fix_modify ID Pi value Lp value: change the osmotic potential or the
+   hydraulic conductivity between runs (inflation with a large Lp first)
+------------------------------------------------------------------------- */
+
+int FixCellFluid::modify_param(int narg, char **arg)
+{
+  int iarg = 0;
+  while (iarg < narg) {
+    if (iarg + 2 > narg)
+      error->all(FLERR, "fix cell/fluid: keyword '{}' needs a value", arg[iarg]);
+    if (strcmp(arg[iarg], "Pi") == 0) {
+      Pi = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (Pi > 0.0)
+        error->all(FLERR, "fix cell/fluid: osmotic potential Pi must be <= 0 (water potential), got {}",
+                   Pi);
+    } else if (strcmp(arg[iarg], "Lp") == 0) {
+      Lp = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (Lp < 0.0)
+        error->all(FLERR, "fix cell/fluid: hydraulic conductivity Lp must be >= 0, got {}", Lp);
+    } else
+      error->all(FLERR, "Unknown keyword '{}' for fix cell/fluid: expected 'Pi' or 'Lp'", arg[iarg]);
+    iarg += 2;
+  }
+  return iarg;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellFluid::init()
+{
+  sph = dynamic_cast<PairCellSPH *>(force->pair_match("^cell/sph", 0));
+  if (!sph) error->all(FLERR, "Fix cell/fluid requires pair style cell/sph (alone or in hybrid)");
+  if (!atom->rmass_flag)
+    error->all(FLERR, "Fix cell/fluid requires per-atom masses (rmass in fix property/atom)");
+  if (!force->newton_bond)
+    error->all(FLERR,
+               "Fix cell/fluid requires newton_bond on: each wall triangle must be counted once");
+  if (!atom->nangles && Lp > 0.0)
+    error->all(FLERR, "Fix cell/fluid needs the wall triangles (angles) to measure the cell area");
+  dtf = 0.5 * update->dt;
+  if (utils::strmatch(update->integrate_style, "^respa")) {
+    auto respa = dynamic_cast<Respa *>(update->integrate);
+    ilevel_respa = respa->nlevels - 1;
+    dtf = 0.5 * respa->step[ilevel_respa];
+  }
+  grow_cells();
+}
+
+void FixCellFluid::grow_cells()
+{
+  tagint maxmol_local = 0, maxmol = 0;
+  for (int i = 0; i < atom->nlocal; i++) maxmol_local = MAX(maxmol_local, atom->molecule[i]);
+  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (maxmol <= ncells) return;
+  const int old = ncells;
+  ncells = (int) maxmol;
+  memory->grow(area, ncells + 1, "cell/fluid:area");
+  memory->grow(nfluid, ncells + 1, "cell/fluid:nfluid");
+  memory->grow(flux_local, ncells + 1, "cell/fluid:flux_local");
+  memory->grow(flux_all, ncells + 1, "cell/fluid:flux_all");
+  for (int m = old + 1; m <= ncells; m++) flux_local[m] = 0.0;
+  if (flux_restart) {
+    // the restart's totals were kept on rank 0 only, so they are summed once
+    if (comm->me == 0)
+      for (int m = 1; m <= ncells && m <= (int) flux_restart[0]; m++) flux_local[m] += flux_restart[m];
+    memory->destroy(flux_restart);
+  }
+  size_vector = ncells;
+  flux_stale = 1;
+}
+
+void FixCellFluid::setup(int /*vflag*/)
+{
+  grow_cells();
+}
+
+/* ----------------------------------------------------------------------
+   wall area (triangles = angles, counted once with newton_bond on) and
+   fluid count of each cell
+------------------------------------------------------------------------- */
+
+void FixCellFluid::cell_geometry()
+{
+  double **x = atom->x;
+  tagint *molecule = atom->molecule;
+  int *mask = atom->mask;
+  std::vector<double> local(2 * (ncells + 1), 0.0), all(2 * (ncells + 1));
+
+  int **anglelist = neighbor->anglelist;
+  for (int n = 0; n < neighbor->nanglelist; n++) {
+    if (anglelist[n][3] <= 0) continue;    // triangle of a broken wall
+    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
+    double u[3], w[3];
+    for (int d = 0; d < 3; d++) {
+      u[d] = x[b][d] - x[a][d];
+      w[d] = x[c][d] - x[a][d];
+    }
+    const double cx = u[1] * w[2] - u[2] * w[1];
+    const double cy = u[2] * w[0] - u[0] * w[2];
+    const double cz = u[0] * w[1] - u[1] * w[0];
+    const tagint m = molecule[b];
+    if (m >= 1 && m <= ncells) local[m] += 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
+  }
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && molecule[i] >= 1 && molecule[i] <= ncells)
+      local[ncells + 1 + molecule[i]] += 1.0;
+  MPI_Allreduce(local.data(), all.data(), 2 * (ncells + 1), MPI_DOUBLE, MPI_SUM, world);
+  for (int m = 0; m <= ncells; m++) {
+    area[m] = all[m];
+    nfluid[m] = all[ncells + 1 + m];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellFluid::integrate(double dt_half)
+{
+  const bool osmosis = (Lp > 0.0);
+  if (osmosis) cell_geometry();
+
+  double *rho = sph->rho_array();
+  double *drho = sph->drho_array();
+  double *rmass = atom->rmass;
+  int *type = atom->type;
+  int *mask = atom->mask;
+  tagint *molecule = atom->molecule;
+  const int nlocal = atom->nlocal;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || !sph->is_fluid(type[i])) continue;
+    double rate_rho = drho[i];
+    const tagint m = molecule[i];
+    if (osmosis && m >= 1 && m <= ncells && nfluid[m] > 0) {
+      const double P = sph->pressure(type[i], rho[i]);
+      const double dm = osmotic_mass_rate(area[m], Lp, rho[i], (int) nfluid[m], P, Pi);
+      rate_rho += rho[i] / rmass[i] * dm;
+      rmass[i] += dt_half * dm;
+      flux_local[m] += dt_half * dm;
+      flux_stale = 1;
+    }
+    rho[i] += dt_half * rate_rho;
+  }
+}
+
+void FixCellFluid::initial_integrate(int /*vflag*/)
+{
+  integrate(dtf);
+}
+
+void FixCellFluid::final_integrate()
+{
+  integrate(dtf);
+}
+
+void FixCellFluid::initial_integrate_respa(int /*vflag*/, int ilevel, int /*iloop*/)
+{
+  if (ilevel == ilevel_respa) integrate(dtf);
+}
+
+void FixCellFluid::final_integrate_respa(int ilevel, int /*iloop*/)
+{
+  if (ilevel == ilevel_respa) integrate(dtf);
+}
+
+/* ----------------------------------------------------------------------
+   vector element m: mass taken up by cell m+1 through its wall since the
+   fix was defined (negative: lost)
+------------------------------------------------------------------------- */
+
+double FixCellFluid::compute_vector(int m)
+{
+  if (flux_stale) {
+    MPI_Allreduce(flux_local, flux_all, ncells + 1, MPI_DOUBLE, MPI_SUM, world);
+    flux_stale = 0;
+  }
+  return flux_all[m + 1];
+}
+
+void FixCellFluid::write_restart(FILE *fp)
+{
+  std::vector<double> all(ncells + 1);
+  MPI_Allreduce(flux_local, all.data(), ncells + 1, MPI_DOUBLE, MPI_SUM, world);
+  all[0] = ncells;
+  if (comm->me == 0) {
+    int size = (ncells + 1) * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(all.data(), sizeof(double), ncells + 1, fp);
+  }
+}
+
+void FixCellFluid::restart(char *buf)
+{
+  auto list = (double *) buf;
+  const int n = (int) list[0];
+  memory->create(flux_restart, n + 1, "cell/fluid:flux_restart");
+  for (int m = 0; m <= n; m++) flux_restart[m] = list[m];
+  flux_restart[0] = n;
+}

@@ -1,0 +1,56 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellmech: integrates the density and mass of the protoplasm particles:
+   continuity (from pair cell/sph) plus osmotic exchange through the cell
+   wall (Eqs. 9-10), per cell (molecule ID).
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(cell/fluid,FixCellFluid);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_CELL_FLUID_H
+#define LMP_FIX_CELL_FLUID_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixCellFluid : public Fix {
+ public:
+  FixCellFluid(class LAMMPS *, int, char **);
+  ~FixCellFluid() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void final_integrate() override;
+  void initial_integrate_respa(int, int, int) override;
+  void final_integrate_respa(int, int) override;
+  int modify_param(int, char **) override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+ protected:
+  double Pi, Lp;
+  double dtf;
+  int ncells;                       // largest molecule ID: cells are 1..ncells
+  double *area, *nfluid;            // per cell, current wall area and fluid count
+  double *flux_local, *flux_all;    // per cell, mass added by osmosis since the fix was defined
+  double *flux_restart;
+  int flux_stale;
+  class PairCellSPH *sph;
+  class Fix *respa_fix;
+  int ilevel_respa;
+
+  void grow_cells();
+  void cell_geometry();
+  void integrate(double);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,417 @@
+/* ----------------------------------------------------------------------
+   cellmech: pair style cell/sph
+
+   Weakly compressible SPH for the protoplasm (Van Liedekerke et al. 2010):
+     dv_i/dt = - sum_j m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij
+               + sum_j m_j (mu_i + mu_j) / (rho_i rho_j) v_ij (1/r) dW/dr     (Eq. 5)
+     P = P0 + rho0 c^2/7 [(rho/rho0)^7 - 1]                                   (Eq. 6)
+     drho_i/dt (continuity part) = sum_j m_j v_ij . grad_i W_ij               (Eq. 7)
+   Per-particle mass is atom->rmass (osmosis changes it, fix cell/fluid);
+   density and its rate live in fix property/atom as d_rho and d_drho.
+   Density and mass change inside a step, so both are forward-communicated
+   to ghosts at the start of compute(); the rate is reverse-communicated.
+   The pair energy is the fluid's internal energy sum_i m_i e(rho_i) with
+   de/drho = P/rho^2, so that kinetic + potential energy is the conserved
+   total of the inviscid equations.
+------------------------------------------------------------------------- */
+
+#include "pair_cell_sph.h"
+
+#include "atom.h"
+#include "cell_physics.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace CellPhysics;
+
+/* ---------------------------------------------------------------------- */
+
+PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
+    Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
+    irho(-1), idrho(-1), nmax(0), prho2(nullptr)
+{
+  comm_forward = 2;
+  comm_reverse = 1;
+  // the viscous force is not along r_ij; the virial is tallied per pair with its full vector
+  no_virial_fdotr_compute = 0;
+}
+
+PairCellSPH::~PairCellSPH()
+{
+  memory->destroy(prho2);
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(fluid);
+    memory->destroy(rho0);
+    memory->destroy(c);
+    memory->destroy(P0);
+    memory->destroy(mu);
+    memory->destroy(s);
+  }
+}
+
+double PairCellSPH::pressure(int type, double rho) const
+{
+  return tait_pressure(rho, rho0[type], c[type], P0[type]);
+}
+
+double *PairCellSPH::rho_array() const
+{
+  return atom->dvector[irho];
+}
+
+double *PairCellSPH::drho_array() const
+{
+  return atom->dvector[idrho];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellSPH::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  // density and mass changed in initial_integrate: refresh the ghosts
+  comm->forward_comm(this);
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double *rmass = atom->rmass;
+  int *type = atom->type;
+  double *rho = atom->dvector[irho];
+  double *drho = atom->dvector[idrho];
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(prho2);
+    memory->create(prho2, nmax, "pair:prho2");
+  }
+
+  // quantities of one particle only: once per particle, not per pair
+  for (int i = 0; i < nall; i++) {
+    const int t = type[i];
+    if (fluid[t]) {
+      prho2[i] = pressure(t, rho[i]) / (rho[i] * rho[i]);
+      if (i < nlocal && eflag) {
+        // internal energy e(rho) = int_rho0^rho P/r^2 dr of the Tait law
+        const double k = rho0[t] * c[t] * c[t] / 7.0;
+        const double r6 = pow(rho[i] / rho0[t], 6.0);
+        const double e = (P0[t] - k) * (1.0 / rho0[t] - 1.0 / rho[i]) + k / rho0[t] * (r6 - 1.0) / 6.0;
+        const double ei = rmass[i] * e;
+        if (eflag_global) eng_vdwl += ei;
+        if (eflag_atom) eatom[i] += ei;
+      }
+    } else
+      prho2[i] = 0.0;
+    if (i < nlocal || newton_pair) drho[i] = 0.0;
+  }
+
+  const int inum = list->inum;
+  int *ilist = list->ilist;
+  int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const int itype = type[i];
+    if (!fluid[itype]) continue;
+    const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
+    const double mi = rmass[i];
+    int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int jtype = type[j];
+      if (!fluid[jtype]) continue;
+      const double delx = xtmp - x[j][0];
+      const double dely = ytmp - x[j][1];
+      const double delz = ztmp - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq[itype][jtype]) continue;
+
+      const double r = sqrt(rsq);
+      const double wr = kernel_dwdr(r, s[itype][jtype]) / r;    // grad_i W = wr * del
+      const double mj = rmass[j];
+      const double dvx = v[i][0] - v[j][0];
+      const double dvy = v[i][1] - v[j][1];
+      const double dvz = v[i][2] - v[j][2];
+
+      // pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
+      const double fp = -mi * mj * (prho2[i] + prho2[j]) * wr;
+      const double fv = mi * mj * (mu[itype] + mu[jtype]) / (rho[i] * rho[j]) * wr;
+      const double fx = fp * delx + fv * dvx;
+      const double fy = fp * dely + fv * dvy;
+      const double fz = fp * delz + fv * dvz;
+
+      f[i][0] += fx;
+      f[i][1] += fy;
+      f[i][2] += fz;
+      const double vdotw = (dvx * delx + dvy * dely + dvz * delz) * wr;
+      drho[i] += mj * vdotw;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        f[j][2] -= fz;
+        drho[j] += mi * vdotw;
+      }
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+    }
+  }
+
+  if (newton_pair) comm->reverse_comm(this);
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellSPH::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->ntypes + 1;
+  memory->create(setflag, np1, np1, "pair:setflag");
+  memory->create(cutsq, np1, np1, "pair:cutsq");
+  memory->create(s, np1, np1, "pair:s");
+  memory->create(fluid, np1, "pair:fluid");
+  memory->create(rho0, np1, "pair:rho0");
+  memory->create(c, np1, "pair:c");
+  memory->create(P0, np1, "pair:P0");
+  memory->create(mu, np1, "pair:mu");
+  for (int i = 1; i < np1; i++) {
+    fluid[i] = 0;
+    rho0[i] = c[i] = P0[i] = mu[i] = 0.0;
+    for (int j = i; j < np1; j++) setflag[i][j] = 0;
+  }
+}
+
+void PairCellSPH::settings(int narg, char ** /*arg*/)
+{
+  if (narg != 0)
+    error->all(FLERR, "Illegal pair_style cell/sph command: expected no arguments, got {}", narg);
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I I rho0 c P0 mu s    a fluid type: equation of state, viscosity, smoothing length
+   pair_coeff I J s                 smoothing length between two fluid types (default: mean)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::coeff(int narg, char **arg)
+{
+  if (narg != 7 && narg != 3)
+    error->all(FLERR,
+               "Incorrect number of args for pair_coeff cell/sph: expected "
+               "'pair_coeff I I rho0 c P0 mu s' or 'pair_coeff I J s', got {} arguments",
+               narg);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  int count = 0;
+  if (narg == 7) {
+    if (ilo != jlo || ihi != jhi)
+      error->all(FLERR,
+                 "pair_coeff cell/sph: the equation of state belongs to one fluid type; use "
+                 "'pair_coeff I I rho0 c P0 mu s' (and 'pair_coeff I J s' between fluid types)");
+    const double rho0_one = utils::numeric(FLERR, arg[2], false, lmp);
+    const double c_one = utils::numeric(FLERR, arg[3], false, lmp);
+    const double P0_one = utils::numeric(FLERR, arg[4], false, lmp);
+    const double mu_one = utils::numeric(FLERR, arg[5], false, lmp);
+    const double s_one = utils::numeric(FLERR, arg[6], false, lmp);
+    if (rho0_one <= 0.0)
+      error->all(FLERR, "pair_coeff cell/sph: reference density rho0 must be > 0, got {}", rho0_one);
+    if (c_one <= 0.0)
+      error->all(FLERR, "pair_coeff cell/sph: sound speed c must be > 0, got {}", c_one);
+    if (mu_one < 0.0)
+      error->all(FLERR, "pair_coeff cell/sph: viscosity mu must be >= 0, got {}", mu_one);
+    if (s_one <= 0.0)
+      error->all(FLERR, "pair_coeff cell/sph: smoothing length s must be > 0, got {}", s_one);
+    for (int i = ilo; i <= ihi; i++) {
+      fluid[i] = 1;
+      rho0[i] = rho0_one;
+      c[i] = c_one;
+      P0[i] = P0_one;
+      mu[i] = mu_one;
+      s[i][i] = s_one;
+      setflag[i][i] = 1;
+      count++;
+    }
+  } else {
+    const double s_one = utils::numeric(FLERR, arg[2], false, lmp);
+    if (s_one <= 0.0)
+      error->all(FLERR, "pair_coeff cell/sph: smoothing length s must be > 0, got {}", s_one);
+    for (int i = ilo; i <= ihi; i++)
+      for (int j = MAX(jlo, i); j <= jhi; j++) {
+        if (i == j)
+          error->all(FLERR, "pair_coeff cell/sph: type {} needs 'pair_coeff {} {} rho0 c P0 mu s'",
+                     i, i, i);
+        s[i][j] = s_one;
+        setflag[i][j] = 1;
+        count++;
+      }
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellSPH::init_style()
+{
+  if (!atom->rmass_flag)
+    error->all(FLERR,
+               "Pair style cell/sph requires per-atom masses: add rmass to the fix property/atom "
+               "(fix ID all property/atom rmass d_rho d_drho ...)");
+  int flag, cols;
+  irho = atom->find_custom("rho", flag, cols);
+  if (irho < 0 || flag != 1 || cols != 0)
+    error->all(FLERR, "Pair style cell/sph requires the per-atom density d_rho of fix property/atom");
+  idrho = atom->find_custom("drho", flag, cols);
+  if (idrho < 0 || flag != 1 || cols != 0)
+    error->all(FLERR,
+               "Pair style cell/sph requires the per-atom density rate d_drho of fix property/atom");
+  if (!comm->ghost_velocity)
+    error->all(FLERR,
+               "Pair style cell/sph requires 'comm_modify vel yes' (viscosity and continuity use "
+               "ghost velocities)");
+  neighbor->add_request(this);
+}
+
+double PairCellSPH::init_one(int i, int j)
+{
+  if (!fluid[i] || !fluid[j])
+    error->all(FLERR, "Pair style cell/sph: types {} and {} are not both fluid types", i, j);
+  if (setflag[i][j] == 0) s[i][j] = 0.5 * (s[i][i] + s[j][j]);
+  s[j][i] = s[i][j];
+  return 2.0 * s[i][j];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairCellSPH::write_restart(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++) {
+    fwrite(&fluid[i], sizeof(int), 1, fp);
+    fwrite(&rho0[i], sizeof(double), 1, fp);
+    fwrite(&c[i], sizeof(double), 1, fp);
+    fwrite(&P0[i], sizeof(double), 1, fp);
+    fwrite(&mu[i], sizeof(double), 1, fp);
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      fwrite(&s[i][j], sizeof(double), 1, fp);
+    }
+  }
+}
+
+void PairCellSPH::read_restart(FILE *fp)
+{
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++) {
+    if (me == 0) {
+      utils::sfread(FLERR, &fluid[i], sizeof(int), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &rho0[i], sizeof(double), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &c[i], sizeof(double), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &P0[i], sizeof(double), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &mu[i], sizeof(double), 1, fp, nullptr, error);
+    }
+    MPI_Bcast(&fluid[i], 1, MPI_INT, 0, world);
+    MPI_Bcast(&rho0[i], 1, MPI_DOUBLE, 0, world);
+    MPI_Bcast(&c[i], 1, MPI_DOUBLE, 0, world);
+    MPI_Bcast(&P0[i], 1, MPI_DOUBLE, 0, world);
+    MPI_Bcast(&mu[i], 1, MPI_DOUBLE, 0, world);
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) {
+        utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &s[i][j], sizeof(double), 1, fp, nullptr, error);
+      }
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      MPI_Bcast(&s[i][j], 1, MPI_DOUBLE, 0, world);
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
+                           double /*factor_lj*/, double &fforce)
+{
+  // central (pressure) part only; the viscous force is not along r_ij
+  const double *rho = atom->dvector[irho];
+  const double r = sqrt(rsq);
+  const double wr = kernel_dwdr(r, s[itype][jtype]) / r;
+  fforce = -atom->rmass[i] * atom->rmass[j] *
+      (pressure(itype, rho[i]) / (rho[i] * rho[i]) + pressure(jtype, rho[j]) / (rho[j] * rho[j])) *
+      wr;
+  return 0.0;
+}
+
+void *PairCellSPH::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "rho0") == 0) return (void *) rho0;
+  if (strcmp(str, "c") == 0) return (void *) c;
+  if (strcmp(str, "P0") == 0) return (void *) P0;
+  if (strcmp(str, "mu") == 0) return (void *) mu;
+  dim = 2;
+  if (strcmp(str, "s") == 0) return (void *) s;
+  return nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairCellSPH::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  double *rho = atom->dvector[irho];
+  double *rmass = atom->rmass;
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    buf[m++] = rho[list[k]];
+    buf[m++] = rmass[list[k]];
+  }
+  return m;
+}
+
+void PairCellSPH::unpack_forward_comm(int n, int first, double *buf)
+{
+  double *rho = atom->dvector[irho];
+  double *rmass = atom->rmass;
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    rho[i] = buf[m++];
+    rmass[i] = buf[m++];
+  }
+}
+
+int PairCellSPH::pack_reverse_comm(int n, int first, double *buf)
+{
+  double *drho = atom->dvector[idrho];
+  int m = 0;
+  for (int i = first; i < first + n; i++) buf[m++] = drho[i];
+  return m;
+}
+
+void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  double *drho = atom->dvector[idrho];
+  int m = 0;
+  for (int k = 0; k < n; k++) drho[list[k]] += buf[m++];
+}
+
+double PairCellSPH::memory_usage()
+{
+  return Pair::memory_usage() + (double) nmax * sizeof(double);
+}

@@ -1,0 +1,59 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellmech: SPH protoplasm (Eqs. 3-7): cubic-spline kernel, Tait equation
+   of state with background turgor, symmetric pressure force, Morris
+   laminar viscosity and the continuity equation, with per-particle mass.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(cell/sph,PairCellSPH);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_CELL_SPH_H
+#define LMP_PAIR_CELL_SPH_H
+
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class PairCellSPH : public Pair {
+ public:
+  PairCellSPH(class LAMMPS *);
+  ~PairCellSPH() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  double single(int, int, int, int, double, double, double, double &) override;
+  void *extract(const char *, int &) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+  // equation of state of a fluid type; used by fix cell/fluid and compute cell/props too
+  bool is_fluid(int type) const { return fluid[type] != 0; }
+  double pressure(int type, double rho) const;
+  double *rho_array() const;     // per-atom density d_rho
+  double *drho_array() const;    // per-atom continuity rate d_drho
+
+ protected:
+  int *fluid;                          // per type: 1 if a fluid type (pair_coeff I I set)
+  double *rho0, *c, *P0, *mu;          // per type
+  double **s;                          // per type pair: smoothing length (cutoff 2s)
+  int irho, idrho;                     // indices of d_rho, d_drho in atom->dvector
+  int nmax;
+  double *prho2;                       // P / rho^2 of local and ghost atoms, once per step
+
+  void allocate();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
