@@ -218,8 +218,8 @@ void BondCellTether::init_style()
   if (iref < 0 || flag != 1 || cols != 3)
     error->all(FLERR,
                "Bond style cell/tether requires the wall reference positions as a per-atom array: "
-               "'fix ID all property/atom d2_{} 3 ghost yes' before read_data, filled from the "
-               "data file (read_data ... fix ID NULL CellRef)",
+               "'fix cell all property/atom rmass d_rho d_drho d2_{} 3 ghost yes' before read_data, filled from the "
+               "data file (read_data ... fix ID NULL cell)",
                REF_NAME);
 
   bool damped = false;

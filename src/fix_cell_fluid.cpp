@@ -1,14 +1,22 @@
 /* ----------------------------------------------------------------------
    cellmech: fix cell/fluid
 
-     drho_i/dt = drho*_i/dt + (rho_i / m_i) dm_i/dt                        (Eq. 9)
+     drho_i/dt = drho^c_i/dt + (rho_i / m_i) dm_i/dt                        (Eq. 9)
      dm_i/dt   = -(A_c L_p rho_i / N_f)(P_i + Pi)                           (Eq. 10)
-   drho*_i/dt is the continuity rate computed by pair cell/sph. A_c is the
+   drho^c_i/dt is the continuity rate of pair cell/sph (Eq. 7). A_c is the
    current area of the wall of the particle's cell, summed over the wall's
    triangles (the angles of the topology), and N_f the cell's current
-   number of fluid particles in the fix group. Density and mass advance in
-   two half steps, like velocities in velocity Verlet. Under run_style respa
-   they advance on the outermost level, where the SPH forces are.
+   number of fluid particles in the fix group.
+   Density and mass leapfrog the velocities, as in the paper: in pre_force,
+   once the positions and half-step velocities of the new step are known
+   and before the forces, rho(n+1) = rho(n) + dt [drho^c/dt + (rho/m) dm/dt]
+   with the continuity rate of the half-step velocities, so the pressure
+   force of step n+1 sees the density of step n+1. Advancing the density by
+   velocity-Verlet half steps instead (with the rate of the previous force
+   call) lets the pressure lag the motion and pumps energy into the
+   acoustic modes at a rate ~ (c k)^2 dt: unstable at the wall's time steps.
+   Under run_style respa they advance on the outermost level, with the
+   SPH forces.
 ------------------------------------------------------------------------- */
 
 #include "fix_cell_fluid.h"
@@ -18,6 +26,7 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "group.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -38,9 +47,9 @@ using namespace CellPhysics;
 ------------------------------------------------------------------------- */
 
 FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
-    Fix(_lmp, narg, arg), Pi(0.0), Lp(0.0), ncells(0), area(nullptr), nfluid(nullptr),
-    flux_local(nullptr), flux_all(nullptr), flux_restart(nullptr), flux_stale(1), sph(nullptr),
-    respa_fix(nullptr), ilevel_respa(0)
+    Fix(_lmp, narg, arg), Pi(0.0), Lp(0.0), dt(0.0), ilevel_respa(0), ncells(0), area(nullptr),
+    nfluid(nullptr), flux_local(nullptr), flux_all(nullptr), flux_restart(nullptr), flux_stale(1),
+    sph(nullptr)
 {
   if (narg != 7)
     error->all(FLERR,
@@ -70,7 +79,7 @@ FixCellFluid::~FixCellFluid()
 
 int FixCellFluid::setmask()
 {
-  return INITIAL_INTEGRATE | FINAL_INTEGRATE | INITIAL_INTEGRATE_RESPA | FINAL_INTEGRATE_RESPA;
+  return PRE_FORCE | PRE_FORCE_RESPA;
 }
 
 /* ----------------------------------------------------------------------
@@ -113,11 +122,12 @@ void FixCellFluid::init()
                "Fix cell/fluid requires newton_bond on: each wall triangle must be counted once");
   if (!atom->nangles && Lp > 0.0)
     error->all(FLERR, "Fix cell/fluid needs the wall triangles (angles) to measure the cell area");
-  dtf = 0.5 * update->dt;
+  dt = update->dt;
+  ilevel_respa = 0;
   if (utils::strmatch(update->integrate_style, "^respa")) {
     auto respa = dynamic_cast<Respa *>(update->integrate);
     ilevel_respa = respa->nlevels - 1;
-    dtf = 0.5 * respa->step[ilevel_respa];
+    dt = respa->step[ilevel_respa];
   }
   grow_cells();
 }
@@ -145,10 +155,6 @@ void FixCellFluid::grow_cells()
   flux_stale = 1;
 }
 
-void FixCellFluid::setup(int /*vflag*/)
-{
-  grow_cells();
-}
 
 /* ----------------------------------------------------------------------
    wall area (triangles = angles, counted once with newton_bond on) and
@@ -189,8 +195,15 @@ void FixCellFluid::cell_geometry()
 
 /* ---------------------------------------------------------------------- */
 
-void FixCellFluid::integrate(double dt_half)
+// at the start of a run the state is as given: nothing to advance, only cells to count
+void FixCellFluid::setup_pre_force(int /*vflag*/)
 {
+  grow_cells();
+}
+
+void FixCellFluid::pre_force(int /*vflag*/)
+{
+  sph->continuity();
   const bool osmosis = (Lp > 0.0);
   if (osmosis) cell_geometry();
 
@@ -204,38 +217,23 @@ void FixCellFluid::integrate(double dt_half)
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || !sph->is_fluid(type[i])) continue;
-    double rate_rho = drho[i];
+    double rate = drho[i];
     const tagint m = molecule[i];
     if (osmosis && m >= 1 && m <= ncells && nfluid[m] > 0) {
       const double P = sph->pressure(type[i], rho[i]);
       const double dm = osmotic_mass_rate(area[m], Lp, rho[i], (int) nfluid[m], P, Pi);
-      rate_rho += rho[i] / rmass[i] * dm;
-      rmass[i] += dt_half * dm;
-      flux_local[m] += dt_half * dm;
+      rate += rho[i] / rmass[i] * dm;
+      rmass[i] += dt * dm;
+      flux_local[m] += dt * dm;
       flux_stale = 1;
     }
-    rho[i] += dt_half * rate_rho;
+    rho[i] += dt * rate;
   }
 }
 
-void FixCellFluid::initial_integrate(int /*vflag*/)
+void FixCellFluid::pre_force_respa(int vflag, int ilevel, int /*iloop*/)
 {
-  integrate(dtf);
-}
-
-void FixCellFluid::final_integrate()
-{
-  integrate(dtf);
-}
-
-void FixCellFluid::initial_integrate_respa(int /*vflag*/, int ilevel, int /*iloop*/)
-{
-  if (ilevel == ilevel_respa) integrate(dtf);
-}
-
-void FixCellFluid::final_integrate_respa(int ilevel, int /*iloop*/)
-{
-  if (ilevel == ilevel_respa) integrate(dtf);
+  if (ilevel == ilevel_respa) pre_force(vflag);
 }
 
 /* ----------------------------------------------------------------------

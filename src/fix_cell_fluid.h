@@ -23,11 +23,9 @@ class FixCellFluid : public Fix {
   ~FixCellFluid() override;
   int setmask() override;
   void init() override;
-  void setup(int) override;
-  void initial_integrate(int) override;
-  void final_integrate() override;
-  void initial_integrate_respa(int, int, int) override;
-  void final_integrate_respa(int, int) override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
+  void pre_force_respa(int, int, int) override;
   int modify_param(int, char **) override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -35,19 +33,17 @@ class FixCellFluid : public Fix {
 
  protected:
   double Pi, Lp;
-  double dtf;
+  double dt;                        // step of the level where the SPH forces are
+  int ilevel_respa;
   int ncells;                       // largest molecule ID: cells are 1..ncells
   double *area, *nfluid;            // per cell, current wall area and fluid count
   double *flux_local, *flux_all;    // per cell, mass added by osmosis since the fix was defined
   double *flux_restart;
   int flux_stale;
   class PairCellSPH *sph;
-  class Fix *respa_fix;
-  int ilevel_respa;
 
   void grow_cells();
   void cell_geometry();
-  void integrate(double);
 };
 
 }    // namespace LAMMPS_NS

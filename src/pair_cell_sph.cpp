@@ -8,8 +8,9 @@
      drho_i/dt (continuity part) = sum_j m_j v_ij . grad_i W_ij               (Eq. 7)
    Per-particle mass is atom->rmass (osmosis changes it, fix cell/fluid);
    density and its rate live in fix property/atom as d_rho and d_drho.
-   Density and mass change inside a step, so both are forward-communicated
-   to ghosts at the start of compute(); the rate is reverse-communicated.
+   fix cell/fluid advances density and mass before the forces (using
+   continuity() below), so both are forward-communicated to ghosts at the
+   start of compute(); the rate is reverse-communicated in continuity().
    The pair energy is the fluid's internal energy sum_i m_i e(rho_i) with
    de/drho = P/rho^2, so that kinetic + potential energy is the conserved
    total of the inviscid equations.
@@ -89,7 +90,6 @@ void PairCellSPH::compute(int eflag, int vflag)
   double *rmass = atom->rmass;
   int *type = atom->type;
   double *rho = atom->dvector[irho];
-  double *drho = atom->dvector[idrho];
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const int newton_pair = force->newton_pair;
@@ -116,7 +116,6 @@ void PairCellSPH::compute(int eflag, int vflag)
       }
     } else
       prho2[i] = 0.0;
-    if (i < nlocal || newton_pair) drho[i] = 0.0;
   }
 
   const int inum = list->inum;
@@ -160,20 +159,64 @@ void PairCellSPH::compute(int eflag, int vflag)
       f[i][0] += fx;
       f[i][1] += fy;
       f[i][2] += fz;
-      const double vdotw = (dvx * delx + dvy * dely + dvz * delz) * wr;
-      drho[i] += mj * vdotw;
       if (newton_pair || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
         f[j][2] -= fz;
-        drho[j] += mi * vdotw;
       }
       if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
 
-  if (newton_pair) comm->reverse_comm(this);
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   continuity rate drho_i/dt = sum_j m_j v_ij . grad_i W_ij (Eq. 7) into d_drho
+   of local atoms. Called by fix cell/fluid before the forces, with the
+   velocities of the half step, so that the density leapfrogs the velocity.
+------------------------------------------------------------------------- */
+
+void PairCellSPH::continuity()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double *rmass = atom->rmass;
+  int *type = atom->type;
+  double *drho = atom->dvector[idrho];
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int nall = nlocal + atom->nghost;
+  for (int i = 0; i < (newton_pair ? nall : nlocal); i++) drho[i] = 0.0;
+
+  const int inum = list->inum;
+  int *ilist = list->ilist;
+  int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const int itype = type[i];
+    if (!fluid[itype]) continue;
+    int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int jtype = type[j];
+      if (!fluid[jtype]) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq[itype][jtype]) continue;
+      const double r = sqrt(rsq);
+      const double wr = kernel_dwdr(r, s[itype][jtype]) / r;
+      const double vdotw = ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
+                            (v[i][2] - v[j][2]) * delz) * wr;
+      drho[i] += rmass[j] * vdotw;
+      if (newton_pair || j < nlocal) drho[j] += rmass[i] * vdotw;
+    }
+  }
+  if (newton_pair) comm->reverse_comm(this);
 }
 
 /* ---------------------------------------------------------------------- */

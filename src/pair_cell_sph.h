@@ -36,6 +36,8 @@ class PairCellSPH : public Pair {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
+  void continuity();    // d_drho of local atoms from the current positions and velocities
+
   // equation of state of a fluid type; used by fix cell/fluid and compute cell/props too
   bool is_fluid(int type) const { return fluid[type] != 0; }
   double pressure(int type, double rho) const;

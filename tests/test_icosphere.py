@@ -83,8 +83,11 @@ def main():
                 and rf.max() < R, f"max fluid radius {rf.max():.3f}")
         mw, mf = masses[1] * len(wall), masses[2] * len(fluid)
         T.check(f"cell {mol}: wall mass = input", abs(mw / M - 1) < 1e-12, f"{mw:.6g}")
-        T.check(f"cell {mol}: fluid mass = rho0 * mesh volume", abs(mf / (rho0 * vmesh) - 1) < 1e-12,
-                f"{mf:.6g} vs {rho0 * vmesh:.6g}")
+        # each fluid particle carries its lattice cell (spacing^3) at rho0; the spacing is in the title
+        spacing = float(lines[0].split("spacing ")[1].split(",")[0])
+        T.check(f"cell {mol}: fluid mass = rho0 * N * spacing^3",
+                abs(mf / (rho0 * len(fluid) * spacing ** 3) - 1) < 1e-5, f"{mf:.6g}; mesh volume "
+                f"{rho0 * vmesh:.6g}")
     T.check("reference positions = positions", np.array_equal(refs[:, 1:], atoms[:, 3:6]))
     T.check("per-atom masses = type masses, fluid density rho0",
             np.array_equal(percell[:, 1], [masses[int(t)] for t in atoms[:, 2]])

@@ -11,8 +11,8 @@ Geometry of one cell (Van Liedekerke et al. 2010, MODEL.md section 1):
     `fix cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes` with
     `read_data FILE fix cell NULL cell`; bond style cell/tether takes each tether's rest length
     from the rest positions, pair style cell/sph the fluid's mass and density.
-Masses come from physical inputs: fluid density rho0 times the wall volume, and the wall mass
-(total, or areal density times the sphere area). Units are LAMMPS `units micro` (um, pg, us)
+Masses come from physical inputs: fluid density rho0 times each particle's lattice cell volume,
+and the wall mass (total, or areal density times the sphere area). Units are LAMMPS `units micro` (um, pg, us)
 unless --units si is given (m, kg, s).
 
 Atom types: 1 = wall, 2 = fluid. Bond type 1 = tether. Angle type 1 = triangle. One molecule ID
@@ -173,8 +173,11 @@ def build_cells(args):
     if any(len(c) != 3 for c in centres):
         sys.exit("cellgen: --centres wants 'x,y,z;x,y,z;...'")
     nf, nw = len(fluid), len(nodes)
-    # fluid fills the volume enclosed by the wall at density rho0
-    m_fluid = rho0 * volume / nf if nf else 1.0
+    # each fluid particle carries its lattice cell at density rho0: SPH takes m/rho as the particle's
+    # volume, so m = rho0 spacing^3 keeps sum(m/rho) equal to the volume the fluid fills. (Spreading
+    # rho0 V_wall over the particles instead makes every particle claim more room than it has: the
+    # wall then feels a pressure ~30% above the fluid's.) Inflation fills the gap to the wall.
+    m_fluid = rho0 * spacing ** 3 if nf else 1.0
     m_wall = wall_mass / nw
     atoms, bonds, angles, refs = [], [], [], []
     for mol, c in enumerate(centres, 1):
@@ -194,7 +197,7 @@ def build_cells(args):
         lo, hi = pts.min(axis=0) - pad, pts.max(axis=0) + pad
         box = [lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]]
     title = (f"cellgen cell: {len(centres)} cell(s), level {args.level} ({nw} wall nodes), "
-             f"{nf} fluid per cell, R {R:g}, spacing {spacing:.6g}, rho0 {rho0:g}, "
+             f"{nf} fluid per cell, R {R:g}, spacing {spacing:.10g}, rho0 {rho0:g}, "
              f"wall mass {wall_mass:.6g}, units {args.units}")
     rho = [rho0 if a[1] == 2 else 0.0 for a in atoms]
     write_data(args.output, title, box, atoms, bonds, angles, [m_wall, m_fluid], refs, rho)
