@@ -1,6 +1,5 @@
 #!/usr/bin/python3
-"""Turn the main job's LAMMPS outputs into CSV tables and PNG plots (Debian's matplotlib)."""
-import math
+"""Turn the main job's LAMMPS outputs (inflate.dat, compress.dat) into CSV tables and PNG plots."""
 import sys
 
 import matplotlib
@@ -15,32 +14,35 @@ def table(path):
 
 
 def main(out):
-    b = table(f"{out}/breathing.dat")
-    t, r = b[:, 1], b[:, 2]
-    np.savetxt(f"{out}/breathing.csv", np.column_stack([t, r]), delimiter=",",
-               header="time_us,mean_radius_um", comments="")
-    R, M, G, t0 = 30.0, 1.3e4, 8.0e5, 0.126
-    omega = math.sqrt(4 * 3 * G / (M / (4 * math.pi * R * R * t0))) / R
-    fig, ax = plt.subplots(figsize=(6, 3.5))
-    ax.plot(t, r, label="simulation")
-    ax.plot(t, R + (r[0] - R) * np.cos(omega * t), "--", label="Eq. A5, linear")
-    ax.set_xlabel("time (us)")
-    ax.set_ylabel("mean wall radius (um)")
-    ax.set_title("in-vacuo breathing, stiff wall")
-    ax.legend()
+    # inflate.dat: step t V A P M Nf lam lammax Feq leak dM
+    a = table(f"{out}/inflate.dat")
+    t, P, lam, Feq, leak, M = a[:, 1], a[:, 5], a[:, 7], a[:, 9], a[:, 10], a[:, 4]
+    np.savetxt(f"{out}/inflation.csv", np.column_stack([t, P, lam, Feq * 1e-3, M, leak]), delimiter=",",
+               header="time_us,mean_pressure_kPa,mean_stretch,equatorial_force_uN,fluid_mass_pg,leaked",
+               comments="")
+    fig, ax = plt.subplots(1, 2, figsize=(9, 3.5))
+    ax[0].plot(t, P)
+    ax[0].set_xlabel("time (us)")
+    ax[0].set_ylabel("mean fluid pressure (kPa)")
+    ax[1].plot(t, lam)
+    ax[1].set_xlabel("time (us)")
+    ax[1].set_ylabel("mean tether stretch")
+    fig.suptitle("inflation of the stiff cell by osmosis")
     fig.tight_layout()
-    fig.savefig(f"{out}/breathing.png", dpi=120)
+    fig.savefig(f"{out}/inflation.png", dpi=120)
 
-    p = table(f"{out}/plates.dat")
-    eps, Ftop, Fbot = p[:, 3], p[:, 4], p[:, 5]
-    np.savetxt(f"{out}/force-strain.csv", np.column_stack([eps, Ftop * 1e-3, Fbot * 1e-3]),
+    # compress.dat: step t eps Ftop Fbot Feq P
+    c = table(f"{out}/compress.dat")
+    eps, Ftop, Fbot = c[:, 2], c[:, 3], c[:, 4]
+    keep = eps >= 0
+    np.savetxt(f"{out}/force-strain.csv", np.column_stack([eps, Ftop * 1e-3, Fbot * 1e-3])[keep],
                delimiter=",", header="strain,F_top_uN,F_bottom_uN", comments="")
-    fig, ax = plt.subplots(figsize=(6, 3.5))
-    ax.plot(eps, Ftop * 1e-3, label="top plate (moving)")
-    ax.plot(eps, Fbot * 1e-3, label="bottom plate")
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(eps[keep], Ftop[keep] * 1e-3, label="top plate (moving)")
+    ax.plot(eps[keep], Fbot[keep] * 1e-3, label="bottom plate")
     ax.set_xlabel("strain DeltaX / 2R")
     ax.set_ylabel("plate force (uN)")
-    ax.set_title("empty stiff wall between plates")
+    ax.set_title("quasistatic compression of the inflated stiff cell")
     ax.legend()
     fig.tight_layout()
     fig.savefig(f"{out}/force-strain.png", dpi=120)
