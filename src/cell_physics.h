@@ -143,11 +143,31 @@ inline double tait_pressure(double rho, double rho0, double c, double P0)
   return P0 + rho0 * c * c / 7.0 * (x7 - 1.0);
 }
 
+// dP/drho of the Tait law: c^2 (rho/rho0)^6, the squared local sound speed.
+inline double tait_dpdrho(double rho, double rho0, double c)
+{
+  const double x = rho / rho0;
+  const double x2 = x * x;
+  return c * c * x2 * x2 * x2;
+}
+
 // Osmotic mass rate of one fluid particle (Eq. 10): dm/dt = -(A_c L_p rho / N_f)(P + Pi), with
 // Pi < 0 the osmotic potential; water flows in while P < -Pi.
 inline double osmotic_mass_rate(double area, double Lp, double rho, int nfluid, double P, double Pi)
 {
   return -area * Lp * rho / nfluid * (P + Pi);
+}
+
+// Mass taken up in one step dt by a particle of mass m and density rho at pressure P, with
+// k = A_c L_p rho / N_f: Eq. 10 linearised in the step's own mass change,
+//   dm = -k dt (P + Pi + dP/drho (rho/m) dm),
+// because the uptake raises the density (Eq. 9) and so the pressure. Explicit Euler is unstable
+// once k dt dP/drho rho/m > 2, i.e. for the large conductivities that inflate a cell quickly; this
+// form relaxes P towards -Pi without overshoot for any k dt and tends to Eq. 10 as k dt -> 0.
+inline double osmotic_mass_step(double k, double dt, double P, double Pi, double dPdrho, double rho,
+                                double m)
+{
+  return -k * dt * (P + Pi) / (1.0 + k * dt * dPdrho * rho / m);
 }
 
 /* ---------------------------------------------------------------------

@@ -15,8 +15,10 @@
    velocity-Verlet half steps instead (with the rate of the previous force
    call) lets the pressure lag the motion and pumps energy into the
    acoustic modes at a rate ~ (c k)^2 dt: unstable at the wall's time steps.
-   Under run_style respa they advance on the outermost level, with the
-   SPH forces.
+   The osmotic uptake of a step is Eq. 10 linearised in its own effect on
+   the pressure (osmotic_mass_step in cell_physics.h), stable for the large
+   Lp that inflate a cell. Under run_style respa they advance on the
+   outermost level, with the SPH forces.
 ------------------------------------------------------------------------- */
 
 #include "fix_cell_fluid.h"
@@ -219,15 +221,16 @@ void FixCellFluid::pre_force(int /*vflag*/)
     if (!(mask[i] & groupbit) || !sph->is_fluid(type[i])) continue;
     double rate = drho[i];
     const tagint m = molecule[i];
+    double dm = 0.0;
     if (osmosis && m >= 1 && m <= ncells && nfluid[m] > 0) {
       const double P = sph->pressure(type[i], rho[i]);
-      const double dm = osmotic_mass_rate(area[m], Lp, rho[i], (int) nfluid[m], P, Pi);
-      rate += rho[i] / rmass[i] * dm;
-      rmass[i] += dt * dm;
-      flux_local[m] += dt * dm;
+      const double k = area[m] * Lp * rho[i] / nfluid[m];
+      dm = osmotic_mass_step(k, dt, P, Pi, sph->dpressure_drho(type[i], rho[i]), rho[i], rmass[i]);
+      flux_local[m] += dm;
       flux_stale = 1;
     }
-    rho[i] += dt * rate;
+    rho[i] += dt * rate + rho[i] / rmass[i] * dm;
+    rmass[i] += dm;
   }
 }
 

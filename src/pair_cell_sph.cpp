@@ -65,6 +65,11 @@ double PairCellSPH::pressure(int type, double rho) const
   return tait_pressure(rho, rho0[type], c[type], P0[type]);
 }
 
+double PairCellSPH::dpressure_drho(int type, double rho) const
+{
+  return tait_dpdrho(rho, rho0[type], c[type]);
+}
+
 double *PairCellSPH::rho_array() const
 {
   return atom->dvector[irho];

@@ -41,6 +41,7 @@ class PairCellSPH : public Pair {
   // equation of state of a fluid type; used by fix cell/fluid and compute cell/props too
   bool is_fluid(int type) const { return fluid[type] != 0; }
   double pressure(int type, double rho) const;
+  double dpressure_drho(int type, double rho) const;
   double *rho_array() const;     // per-atom density d_rho
   double *drho_array() const;    // per-atom continuity rate d_drho
 

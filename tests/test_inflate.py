@@ -1,0 +1,78 @@
+"""Issue 3, check 5 (coarse, as CI runs it): inflation of a cell by osmosis (lammps-inputs/in.inflate).
+
+Coarse cell: 642 wall nodes and ~460 fluid particles, lengths of the model (s, r0, reach) scaled by
+the doubled wall spacing (tools/main-job.sh does the same). The paper resolution (2562 + 3500) is
+run by tools/validate-inflation.sh and reported in the issue notes.
+
+Asserted (each justified below):
+ * the mean fluid pressure reaches -Pi within 1% (osmosis stops exactly when P = -Pi; the residual
+   is the acoustic sloshing, averaged over the last outputs);
+ * no fluid particle ever leaves its wall (winding number of the wall mesh, every output);
+ * the fluid mass changes exactly by the integrated osmotic flux (both are sums of the same dt dm
+   terms: round-off, 1e-9 relative);
+ * the equatorial force (Eq. 23) is the wall's tension: F_eq = 2 pi R T with T = G t0 (1 - lam^-6)
+   at the mean stretch, within 5% (printed with its error; the equator's tethers are not the mean
+   tether of the geodesic mesh).
+Printed, not asserted: F_eq / (P pi R^2) at P = 100, 200, 400 kPa and the stretch against
+Young-Laplace. The wall feels less than the mean fluid pressure: SPH truncates the kernel at the
+wall and underestimates the traction of the free surface, ~13% at this resolution and ~6% at the
+paper's (issue notes; the paper reports < 5%), and the ratio grows with P as the 8-4 contacts
+close in. This is a known limit of the model, reported rather than hidden.
+"""
+import math
+
+import numpy as np
+
+import lmptest as T
+
+G, T0 = 8.0e5, 0.126
+COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+
+
+def inflate(d, name, Pi, steps, G=G, t0=T0, Lp=100.0, dt=0.001):
+    out = f"{name}.dat"
+    T.lmp(T.INPUTS + "/in.inflate", cwd=d, log=f"log.{name}", variables=dict(
+        COARSE, dir=T.INPUTS, data="cell.data", Pi=Pi, G=G, t0=t0, Lp=Lp, dt=dt, nsteps=steps,
+        every=steps // 20, out=out, restart_out=f"{name}.restart"))
+    # step t V A P M Nf lam lammax Feq leak dM
+    return T.load(f"{d}/{out}")
+
+
+def summary(a, Gw, t0, R0=30.0):
+    last = a[-4:]
+    P, lam, Feq = last[:, 4].mean(), last[:, 7].mean(), last[:, 9].mean()
+    R = R0 * lam
+    T_wall = Gw * t0 * (1 - lam ** -6)
+    lam_yl = (1 - P * R / 2 / (Gw * t0)) ** (-1 / 6)
+    return P, lam, Feq, R, T_wall, lam_yl
+
+
+def main():
+    d = T.workdir("inflate")
+    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+
+    a = inflate(d, "stiff", -364.0, 20000)
+    P, lam, Feq, R, Tw, lam_yl = summary(a, G, T0)
+    print(f"stiff: P {P:.2f} kPa (target 364), mean stretch {lam:.5f} (Young-Laplace {lam_yl:.5f}), "
+          f"F_eq {Feq:.4g} nN, P pi R^2 {P * math.pi * R * R:.4g} nN, ratio {Feq / (P * math.pi * R * R):.3f}")
+    T.check("stiff: mean pressure reaches -Pi within 1%", abs(P / 364.0 - 1) < 0.01, f"{P / 364 - 1:+.2%}")
+    T.check("stiff: no fluid outside its wall at any output", np.all(a[:, 10] == 0), f"max {a[:, 10].max():g}")
+    dm_err = np.max(np.abs(a[:, 5] - a[0, 5] - a[:, 11])) / a[-1, 11]
+    T.check("stiff: fluid mass changes by the integrated osmotic flux", dm_err < 1e-9,
+            f"gained {a[-1, 11]:.6g} pg, mismatch {dm_err:.1e}")
+    e = Feq / (2 * math.pi * R * Tw) - 1
+    T.check("stiff: equatorial force = 2 pi R T(lam) of the wall (5%)", abs(e) < 0.05, f"{e:+.2%}")
+
+    ratios = []
+    print(f"{'P target':>9s} {'P':>8s} {'lam':>8s} {'lam YL':>8s} {'F_eq':>10s} {'P pi R^2':>10s} ratio")
+    for Pt in (100.0, 200.0, 400.0):
+        a = inflate(d, f"yl{int(Pt)}", -Pt, 20000)
+        P, lam, Feq, R, Tw, lam_yl = summary(a, G, T0)
+        ratio = Feq / (P * math.pi * R * R)
+        ratios.append(ratio)
+        print(f"{Pt:9.0f} {P:8.2f} {lam:8.5f} {lam_yl:8.5f} {Feq:10.4g} {P * math.pi * R * R:10.4g} {ratio:.3f}")
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()

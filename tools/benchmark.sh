@@ -1,0 +1,154 @@
+#!/usr/bin/env bash
+# Benchmark (not a test): particle-steps per second of
+#   (a) cell/full    the full cell at the paper's resolution (2562 wall nodes + 3527 fluid),
+#                    lammps-inputs/in.inflate with its cell-model.lmp, 2000 steps;
+#   (b) stock-sph    the same 3527 fluid particles alone with stock LAMMPS SPH
+#                    (pair sph/taitwater/morris + fix sph), tools/bench/in.stock-sph;
+#   (c) cell/sph     the same particles with our pair cell/sph + fix cell/fluid Pi 0 Lp 0,
+#                    tools/bench/in.cell-sph.
+# (b) and (c) read exactly the fluid of the generated cell.data (lattice spacing 3.01 um, clipped
+# inside the wall) in its fixed box, with rho0 1, c 264.6, viscosity 1 mPa s, cutoff 2s = 6.4 um
+# (stock takes it as its h), dt 0.001 us, units micro, no wall, no turgor, no osmosis; the script
+# checks that their "Ave neighs/atom" agree. Rates are atoms * steps / loop time from LAMMPS's
+# "Loop time" line (the figure behind its "Matom-step/s"); each case runs REPEAT times and the
+# fastest run is kept (the other runs only guard against a busy machine).
+#
+# Usage: tools/benchmark.sh [-np N] [-r REPEAT] [-n NSTEPS] [-k]
+#   -np N      MPI ranks (N > 1 runs mpirun --allow-run-as-root --oversubscribe -np N)
+#   -r REPEAT  runs per case (default 3)
+#   -n NSTEPS  steps per run (default 2000)
+#   -k         keep the work folder (data files and LAMMPS logs) and print its path
+# Environment: LMP (else build/cellmech-env.sh is sourced), NP, REPEAT, NSTEPS, PYTHON.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+NP=${NP:-1}
+REPEAT=${REPEAT:-3}
+NSTEPS=${NSTEPS:-2000}
+PYTHON=${PYTHON:-/usr/bin/python3}
+keep=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    -np) NP=$2; shift 2 ;;
+    -r) REPEAT=$2; shift 2 ;;
+    -n) NSTEPS=$2; shift 2 ;;
+    -k) keep=1; shift ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    *) echo "benchmark: unknown argument $1 (see -h)" >&2; exit 2 ;;
+  esac
+done
+if [ -z "${LMP:-}" ]; then
+  [ -f "$here/build/cellmech-env.sh" ] || { echo "benchmark: no build/cellmech-env.sh: run tools/setup.sh" >&2; exit 1; }
+  # shellcheck disable=SC1091
+  source "$here/build/cellmech-env.sh"
+fi
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+inputs=$here/lammps-inputs
+bench=$here/tools/bench
+
+load0=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo "?")
+work=$(mktemp -d "${TMPDIR:-/tmp}/cellmech-bench.XXXXXX")
+if [ "$keep" = 1 ]; then trap 'echo "benchmark: work folder kept: $work"' EXIT
+else trap 'rm -rf "$work"' EXIT; fi
+cd "$work"
+
+# ---- the cell and its fluid ----------------------------------------------------------------------
+gen=$("$PYTHON" "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid 3500 --inset 1.6)
+spacing=$(sed -n 's/.*spacing \([0-9.eE+-]*\),.*/\1/p' <<<"$gen" | head -n1)
+# the fluid (type 2) of cell.data, in its box, as data files for atom_style sph and molecular
+awk '
+  /xlo xhi|ylo yhi|zlo zhi/ {box = box $0 "\n"; next}
+  /^Masses/ {sec = "m"; next}
+  /^Atoms/ {sec = "a"; next}
+  /^[A-Z]/ {sec = ""; next}
+  sec == "m" && NF == 2 && $1 == 2 {m = $2}
+  sec == "a" && NF >= 6 && $3 == 2 {n++; x[n] = $4; y[n] = $5; z[n] = $6}
+  END {
+    hdr = n " atoms\n1 atom types\n\n" box "\nMasses\n\n1 " m "\n\n"
+    f = "fluid-sph.data"
+    printf "fluid of cell.data for stock SPH\n\n%sAtoms # sph\n\n", hdr > f
+    for (i = 1; i <= n; i++) print i, 1, 1.0, 0.0, 1.0, x[i], y[i], z[i] > f
+    f = "fluid-cell.data"
+    printf "fluid of cell.data for cell/sph\n\n%sAtoms # molecular\n\n", hdr > f
+    for (i = 1; i <= n; i++) print i, 1, 1, x[i], y[i], z[i] > f
+    print m > "fluid.mass"; print n > "fluid.count"
+  }' cell.data
+mfluid=$(cat fluid.mass)
+nfluid=$(cat fluid.count)
+
+# ---- runs --------------------------------------------------------------------------------------
+lmp() {
+  if [ "$NP" -gt 1 ]; then mpirun --allow-run-as-root --oversubscribe -np "$NP" "$LMP" "$@"
+  else "$LMP" "$@"; fi
+}
+# field of the last "Loop time of T on P procs for S steps with N atoms" line: 4 T, 9 S, 12 N
+loopf() { awk -v k="$2" '/^Loop time of/ {v = $k} END {print v}' "$1"; }
+neighs() { awk '/^Ave neighs\/atom/ {v = $4} END {print v}' "$1"; }
+builds() { awk '/^Neighbor list builds/ {v = $5} END {print v}' "$1"; }
+
+declare -A best log
+run_case() {   # name, then LAMMPS arguments
+  local name=$1; shift
+  local r t
+  for r in $(seq 1 "$REPEAT"); do
+    if ! lmp -nocite -log "$name.$r.log" -screen none "$@" >"$name.$r.out" 2>&1 || ! grep -q '^Loop time of' "$name.$r.log"; then
+      echo "benchmark: case $name failed (LAMMPS output follows)" >&2
+      tail -n 30 "$name.$r.out" "$name.$r.log" >&2 || true
+      exit 1
+    fi
+    t=$(loopf "$name.$r.log" 4)
+    if [ -z "${best[$name]:-}" ] || awk -v a="$t" -v b="${best[$name]}" 'BEGIN {exit !(a < b)}'; then
+      best[$name]=$t; log[$name]=$name.$r.log
+    fi
+  done
+}
+
+run_case stock-sph -in "$bench/in.stock-sph" -var data fluid-sph.data -var nsteps "$NSTEPS"
+run_case cell-sph -in "$bench/in.cell-sph" -var data fluid-cell.data -var m "$mfluid" -var nsteps "$NSTEPS"
+run_case cell-full -in "$inputs/in.inflate" -var dir "$inputs" -var data cell.data \
+  -var nsteps "$NSTEPS" -var every 1000 -var out inflate.dat -var restart_out inflated.restart
+
+# ---- report ------------------------------------------------------------------------------------
+cpu=$(awk -F': *' '/^model name/ {print $2; exit}' /proc/cpuinfo 2>/dev/null || true)
+[ -n "$cpu" ] || cpu=$(lscpu 2>/dev/null | awk -F': *' '/Model name/ {print $2; exit}')
+ver=$(awk '/^LAMMPS \(/ {print; exit}' "${log[stock-sph]}")
+ref=$(awk -v n="$(loopf "${log[stock-sph]}" 12)" -v s="$(loopf "${log[stock-sph]}" 9)" \
+  -v t="${best[stock-sph]}" 'BEGIN {printf "%.6e", n * s / t}')
+
+echo "cellmech benchmark: $ver, $NP MPI rank(s), best of $REPEAT run(s) per case"
+echo "machine: $(uname -n), nproc $(nproc), CPU: ${cpu:-unknown}"
+load1=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo "?")
+echo "load average (1 min) before / after: $load0 / $load1 (other work on the machine slows every case)"
+echo "cell: ${gen%%$'\n'*}"
+echo "fluid-only cases: the $nfluid fluid particles of that cell (spacing $spacing um, mass $mfluid pg), no wall"
+echo
+printf '%-30s %7s %6s %10s %17s %9s %12s %7s\n' case atoms steps "loop (s)" "particle-steps/s" "vs stock" "neighs/atom" builds
+for name in stock-sph cell-sph cell-full; do
+  f=${log[$name]}
+  case $name in
+    stock-sph) label="(b) stock sph/taitwater/morris" ;;
+    cell-sph) label="(c) cell/sph + cell/fluid" ;;
+    cell-full) label="(a) full cell (in.inflate)" ;;
+  esac
+  nb=$(neighs "$f"); [ "$name" = cell-full ] && nb="-"   # hybrid/overlay: LAMMPS prints 0
+  awk -v l="$label" -v n="$(loopf "$f" 12)" -v s="$(loopf "$f" 9)" -v t="${best[$name]}" \
+    -v ref="$ref" -v nb="$nb" -v b="$(builds "$f")" 'BEGIN {
+      r = n * s / t
+      printf "%-30s %7d %6d %10.3f %17.4e %9.3f %12s %7s\n", l, n, s, t, r, r / ref, nb, b }'
+done
+awk -v n="$nfluid" -v s="$(loopf "${log[cell-full]}" 9)" -v t="${best[cell-full]}" -v ref="$ref" 'BEGIN {
+  r = n * s / t
+  printf "(a) counting its %d fluid particles only: %.4e fluid-particle-steps/s, %.3f x stock SPH\n", n, r, r / ref }'
+echo
+echo "LAMMPS timing breakdown of the kept runs (% of loop time):"
+for name in stock-sph cell-sph cell-full; do
+  awk -v l="$name" '/^Section \|/ {on = 1; next} on && /^-+$/ {next}
+    on && NF >= 2 && $2 == "|" {out = out sprintf(" %s %s", $1, $NF)} on && /^Other/ {on = 0}
+    END {printf "  %-10s%s\n", l, out}' "${log[$name]}"
+done
+nb=$(neighs "${log[stock-sph]}"); nc=$(neighs "${log[cell-sph]}")
+if [ "$nb" = "$nc" ]; then
+  echo "neighbour check: stock-sph and cell-sph both have Ave neighs/atom = $nb (same lattice, same cutoff 6.4 + skin 0.5)"
+else
+  echo "neighbour check: MISMATCH: stock-sph Ave neighs/atom = $nb, cell-sph = $nc" >&2
+  exit 1
+fi
