@@ -69,7 +69,7 @@ def tait(rho):
     return P0 + RHO0 * C * C / 7.0 * ((rho / RHO0) ** 7 - 1.0)
 
 
-HEAD = f"""
+HEAD = """
 units           micro
 atom_style      molecular
 atom_modify     map array

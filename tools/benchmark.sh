@@ -83,6 +83,7 @@ lmp() {
 # field of the last "Loop time of T on P procs for S steps with N atoms" line: 4 T, 9 S, 12 N
 loopf() { awk -v k="$2" '/^Loop time of/ {v = $k} END {print v}' "$1"; }
 neighs() { awk '/^Ave neighs\/atom/ {v = $4} END {print v}' "$1"; }
+cpuuse() { awk '/% CPU use with/ {v = $1} END {print v}' "$1"; }
 builds() { awk '/^Neighbor list builds/ {v = $5} END {print v}' "$1"; }
 
 declare -A best log
@@ -121,7 +122,7 @@ echo "load average (1 min) before / after: $load0 / $load1 (other work on the ma
 echo "cell: ${gen%%$'\n'*}"
 echo "fluid-only cases: the $nfluid fluid particles of that cell (spacing $spacing um, mass $mfluid pg), no wall"
 echo
-printf '%-30s %7s %6s %10s %17s %9s %12s %7s\n' case atoms steps "loop (s)" "particle-steps/s" "vs stock" "neighs/atom" builds
+printf '%-30s %7s %6s %10s %17s %9s %12s %7s %6s\n' case atoms steps "loop (s)" "particle-steps/s" "vs stock" "neighs/atom" builds "CPU"
 for name in stock-sph cell-sph cell-full; do
   f=${log[$name]}
   case $name in
@@ -131,14 +132,15 @@ for name in stock-sph cell-sph cell-full; do
   esac
   nb=$(neighs "$f"); [ "$name" = cell-full ] && nb="-"   # hybrid/overlay: LAMMPS prints 0
   awk -v l="$label" -v n="$(loopf "$f" 12)" -v s="$(loopf "$f" 9)" -v t="${best[$name]}" \
-    -v ref="$ref" -v nb="$nb" -v b="$(builds "$f")" 'BEGIN {
+    -v ref="$ref" -v nb="$nb" -v b="$(builds "$f")" -v cpu="$(cpuuse "$f")" 'BEGIN {
       r = n * s / t
-      printf "%-30s %7d %6d %10.3f %17.4e %9.3f %12s %7s\n", l, n, s, t, r, r / ref, nb, b }'
+      printf "%-30s %7d %6d %10.3f %17.4e %9.3f %12s %7s %6s\n", l, n, s, t, r, r / ref, nb, b, cpu }'
 done
 awk -v n="$nfluid" -v s="$(loopf "${log[cell-full]}" 9)" -v t="${best[cell-full]}" -v ref="$ref" 'BEGIN {
   r = n * s / t
   printf "(a) counting its %d fluid particles only: %.4e fluid-particle-steps/s, %.3f x stock SPH\n", n, r, r / ref }'
 echo
+echo "CPU: LAMMPS's \"% CPU use\" of the kept run; well under 100% means the rank waited for the CPU."
 echo "LAMMPS timing breakdown of the kept runs (% of loop time):"
 for name in stock-sph cell-sph cell-full; do
   awk -v l="$name" '/^Section \|/ {on = 1; next} on && /^-+$/ {next}
