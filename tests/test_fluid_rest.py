@@ -40,8 +40,10 @@ neighbours within 2s), dt = 5e-4 us (acoustic limit 0.25 s/c = 1.1e-3 us), 2000 
      differ only in summation order (relative round-off ~ N_nb eps ~ 1e-14 per step), which the
      neutrally stable acoustic modes accumulate at most linearly over 2000 steps (~3e-11); 1e-8 is
      far below what any difference in the scheme would give (e.g. pressure from the density of the
-     previous step: relative differences ~ omega dt ~ 0.1 for the layer modes). The layers must also stay layers (in-plane velocities and the spread of
-     v_y within a layer at round-off, same tolerance).
+     previous step: relative differences ~ omega dt ~ 0.1 for the layer modes). The layers must
+     also stay layers: in-plane velocities and the spread of v_y within a layer at round-off (same
+     tolerance; nothing breaks the symmetry but round-off, and P0 > 0 leaves no tensile instability
+     to amplify it).
    * pressure = Tait(rho) for every pair as above; the interior pressure at the end is printed
      against P0 (it differs by the acoustic pressure rho0 c v and the static compression the wall
      imbalance leaves in the interior); wall particles stay fixed with rho = rho0.
@@ -183,7 +185,8 @@ def layer_model(nlayers, nwall, steps):
     """Independent 1-D reduction of Eqs. 5-7 for the channel: by symmetry every fluid layer moves
     rigidly along y, so each particle of layer k feels, per unit mass,
       dv_k/dt = sum_l [-m (P_k/rho_k^2 + P_l/rho_l^2) (y_k - y_l) + m 2 mu/(rho_k rho_l) (v_k - v_l)] g_kl
-      drho_k/dt = sum_l m (v_k - v_l)(y_k - y_l) g_kl,   g_kl = sum over layer l's in-plane lattice of (dW/dr)/r,
+      drho_k/dt = sum_l m (v_k - v_l)(y_k - y_l) g_kl,
+    g_kl = sum over layer l's in-plane lattice of (dW/dr)/r,
     l over the other fluid layers and the fixed wall layers (v = 0, rho = rho0; in-plane offset dx/2).
     Integrated with the scheme of fix nve + fix cell/fluid: half kick, drift, density from the
     half-step velocities, forces, half kick. Returns times and per-layer y, v, rho every 10 steps."""

@@ -1,0 +1,67 @@
+"""Issue 3, check 7: a fluid-filled cell (SPH, virtual particles, osmosis, tethers, contacts) gives
+the same forces on 1 and 2 MPI ranks at step 0 (round-off of the summation order: 1e-12 of the
+largest force), and a run continued from write_restart / read_restart matches the uninterrupted
+run. The continued run rebuilds its neighbour lists at the same step as the uninterrupted one
+(split into two `run` commands), so positions, densities and masses agree to round-off.
+"""
+import numpy as np
+
+import lmptest as T
+
+COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+START = """
+include         {inputs}/in.inflate
+velocity        all create 1.0e7 77 dist gaussian mom yes rot yes
+"""
+DUMP = "write_dump all custom {name} id x y z vx vy vz fx fy fz d_rho mass modify sort id format float %.17g\n"
+
+
+def table(path):
+    a = np.loadtxt(path, skiprows=9)
+    return a[np.argsort(a[:, 0])]
+
+
+def main():
+    d = T.workdir("cell-mpi-restart")
+    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+    common = dict(COARSE, dir=T.INPUTS, data="cell.data", nsteps=0, every=100, Lp=1.0, P0=50.0, mu=10.0)
+    step0 = {}
+    for n in (1, 2):
+        T.lmp(START.format(inputs=T.INPUTS) + "run 0\n" + DUMP.format(name=f"f0-{n}.dump"), cwd=d,
+              nprocs=n, variables=common, log=f"log.step0-{n}")
+        step0[n] = table(f"{d}/f0-{n}.dump")
+    f1, f2 = step0[1][:, 7:10], step0[2][:, 7:10]
+    err = np.abs(f1 - f2).max() / np.abs(f1).max()
+    print(f"step 0: {len(f1)} atoms, max |f| {np.abs(f1).max():.4g} nN, 1 vs 2 ranks max diff {err:.2e}")
+    T.check("step-0 forces on 1 and 2 ranks agree to round-off", err < 1e-12, f"{err:.1e}")
+
+    full = START.format(inputs=T.INPUTS) + "run 200\nwrite_restart half.restart\nrun 200\n" + \
+        DUMP.format(name="full.dump")
+    T.lmp(full, cwd=d, nprocs=2, variables=common, log="log.full")
+    cont = f"""
+variable        Lp index 1.0
+units           micro
+read_restart    half.restart
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+group           wall type 1
+group           fluid type 2
+include         {T.INPUTS}/cell-model.lmp
+fix             integrate all nve
+fix             osmosis fluid cell/fluid Pi -364.0 Lp ${{Lp}}
+timestep        0.001
+run             200
+""" + DUMP.format(name="cont.dump")
+    T.lmp(cont, cwd=d, nprocs=2, variables={k: v for k, v in common.items() if k != "data"},
+          log="log.cont")
+    a, b = table(f"{d}/full.dump"), table(f"{d}/cont.dump")
+    dx = np.abs(a[:, 1:4] - b[:, 1:4]).max()
+    drho = np.abs(a[:, 10] - b[:, 10]).max()
+    dm = np.abs(a[:, 11] - b[:, 11]).max() / a[:, 11].max()
+    print(f"restart on 2 ranks: max position diff {dx:.2e} um, density diff {drho:.2e}, mass diff {dm:.2e}")
+    T.check("restart continues the run (positions, 1e-10 um)", dx < 1e-10, f"{dx:.1e}")
+    T.check("restart continues the run (density and mass, 1e-12)", drho < 1e-12 and dm < 1e-12)
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()
