@@ -175,6 +175,83 @@ TEST_F(Lmp, PairBadInput)
   EXPECT_ERROR("run 0", "cell/lj84 with contact damping gamma > 0 requires 'comm_modify vel yes'");
 }
 
+
+// ---------------------------------------------------------------- fluid styles: bad input
+
+class Fluid : public Lmp {
+ protected:
+  void box(bool with_props = true)
+  {
+    cmds({"units micro", "atom_style molecular", "atom_modify map array"});
+    if (with_props) cmd("fix cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes");
+    cmds({"region box block -10 10 -10 10 -10 10",
+          "create_box 2 box bond/types 1 angle/types 1 extra/bond/per/atom 3 "
+          "extra/angle/per/atom 3 extra/special/per/atom 6",
+          "create_atoms 2 single 0 0 0", "create_atoms 2 single 1 0 0"});
+    if (with_props) cmds({"set type 2 mass 1.0", "set type 2 d_rho 1.0"});
+    else cmd("mass * 1.0");
+  }
+};
+
+TEST_F(Fluid, SphBadInput)
+{
+  box();
+  EXPECT_ERROR("pair_style cell/sph 1", "pair_style cell/sph.*expected no arguments");
+  cmd("pair_style cell/sph");
+  EXPECT_ERROR("pair_coeff 2 2 1 264.6 0 1", "pair_coeff cell/sph.*expected.*rho0 c P0 mu s");
+  EXPECT_ERROR("pair_coeff 2 2 0 264.6 0 1 3.2", "reference density rho0 must be > 0");
+  EXPECT_ERROR("pair_coeff 2 2 1 -1 0 1 3.2", "sound speed c must be > 0");
+  EXPECT_ERROR("pair_coeff 2 2 1 264.6 0 -1 3.2", "viscosity mu must be >= 0");
+  EXPECT_ERROR("pair_coeff 2 2 1 264.6 0 1 0", "smoothing length s must be > 0");
+  EXPECT_ERROR("pair_coeff 1 2 1 264.6 0 1 3.2", "equation of state belongs to one fluid type");
+  EXPECT_ERROR("pair_coeff 2 2 3.2", "type 2 needs 'pair_coeff 2 2 rho0 c P0 mu s'");
+  cmds({"pair_coeff * * 1 264.6 0 1 3.2"});
+  EXPECT_ERROR("run 0", "cell/sph requires 'comm_modify vel yes'");
+}
+
+TEST_F(Fluid, SphNeedsPerAtomFields)
+{
+  box(false);
+  cmds({"pair_style cell/sph", "pair_coeff * * 1 264.6 0 1 3.2", "comm_modify vel yes"});
+  EXPECT_ERROR("run 0", "cell/sph requires per-atom masses: add rmass");
+}
+
+TEST_F(Fluid, VirtualBadInput)
+{
+  box();
+  EXPECT_ERROR("pair_style cell/virtual", "expected 'pair_style cell/virtual reach'");
+  EXPECT_ERROR("pair_style cell/virtual -1", "reach .* must be > 0");
+  cmd("pair_style cell/virtual 2.0");
+  EXPECT_ERROR("pair_coeff 1 2 1.0", "pair_coeff cell/virtual.*expected.*f0 r0 \\[gamma\\]");
+  EXPECT_ERROR("pair_coeff 1 2 1.0 0", "contact distance r0 must be > 0");
+  cmds({"pair_coeff 1 2 1.0 1.5", "pair_coeff 1 1 0.0 1.0", "pair_coeff 2 2 0.0 1.0",
+        "newton off on"});
+  EXPECT_ERROR("run 0", "cell/virtual requires newton_pair on");
+}
+
+TEST_F(Fluid, FixFluidBadInput)
+{
+  box();
+  EXPECT_ERROR("fix f all cell/fluid Pi -100", "expected 'fix ID group cell/fluid Pi value Lp value'");
+  EXPECT_ERROR("fix f all cell/fluid Pi 100 Lp 1", "osmotic potential Pi must be <= 0");
+  EXPECT_ERROR("fix f all cell/fluid Pi -100 Lp -1", "hydraulic conductivity Lp must be >= 0");
+  EXPECT_ERROR("fix f all cell/fluid Pi -100 Lq 1", "Unknown keyword 'Lq' for fix cell/fluid");
+  cmds({"fix f all cell/fluid Pi -100 Lp 0", "pair_style zero 3.0", "pair_coeff * *"});
+  EXPECT_ERROR("run 0", "Fix cell/fluid requires pair style cell/sph");
+  EXPECT_ERROR("fix_modify f Pi 5", "osmotic potential Pi must be <= 0");
+}
+
+TEST_F(Fluid, ComputePropsBadInput)
+{
+  box();
+  EXPECT_ERROR("compute p all cell/props normal 0 0", "'normal' expects three components");
+  EXPECT_ERROR("compute p all cell/props normal 0 0 0", "'normal' must not be zero");
+  EXPECT_ERROR("compute p all cell/props tilt 1", "Unknown keyword 'tilt' for compute cell/props");
+  cmds({"compute p all cell/props", "pair_style zero 3.0", "pair_coeff * *",
+        "variable v equal c_p[1][1]", "thermo_style custom step v_v"});
+  EXPECT_ERROR("run 0", "Compute cell/props requires bond style cell/tether");
+}
+
 // ---------------------------------------------------------------- plugin guard
 
 TEST(PluginGuard, RefusesForeignLammps)
