@@ -30,8 +30,8 @@ static constexpr char REF_NAME[] = "cellref";
 /* ---------------------------------------------------------------------- */
 
 BondCellTether::BondCellTether(LAMMPS *_lmp) :
-    Bond(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1),
-    lmax(0.0), nbroken_local(0), checked(0)
+    Bond(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), lmax(0.0),
+    nbroken_local(0), checked(0)
 {
   born_matrix_enable = 0;
 }
@@ -93,11 +93,12 @@ void BondCellTether::compute(int eflag, int vflag)
                  tag[i1], tag[i2]);
     const double lam = r / l0;
     if (!checked && (lam > 5.0 || lam < 0.2))
-      error->one(FLERR,
-                 "Bond style cell/tether: tether {}-{} is stretched {:.4g} times its rest length at "
-                 "the start of a run; the reference positions d2_cellref are wrong for it (is the "
-                 "fix property/atom defined with 'ghost yes'?)",
-                 tag[i1], tag[i2], lam);
+      error->one(
+          FLERR,
+          "Bond style cell/tether: tether {}-{} is stretched {:.4g} times its rest length at "
+          "the start of a run; the reference positions d2_cellref are wrong for it (is the "
+          "fix property/atom defined with 'ghost yes'?)",
+          tag[i1], tag[i2], lam);
 
     // Failure is tension only: a compressed tether never breaks. A broken bond keeps its
     // place in the topology with type 0, as bond style quartic does, so it is skipped here
@@ -218,7 +219,8 @@ void BondCellTether::init_style()
   if (iref < 0 || flag != 1 || cols != 3)
     error->all(FLERR,
                "Bond style cell/tether requires the wall reference positions as a per-atom array: "
-               "'fix cell all property/atom rmass d_rho d_drho d2_{} 3 ghost yes' before read_data, filled from the "
+               "'fix cell all property/atom rmass d_rho d_drho d2_{} 3 ghost yes' before "
+               "read_data, filled from the "
                "data file (read_data ... fix ID NULL cell)",
                REF_NAME);
 

@@ -40,16 +40,20 @@ BuildSignature compiled_signature()
 #else
   const char *version = LAMMPS_VERSION;
 #endif
-  return {version,           (int) sizeof(bigint), (int) sizeof(tagint),
-          (int) sizeof(imageint), compiled_mpi_vendor(), MPI_VERSION};
+  return {version,
+          (int) sizeof(bigint),
+          (int) sizeof(tagint),
+          (int) sizeof(imageint),
+          compiled_mpi_vendor(),
+          MPI_VERSION};
 }
 
 std::string compat_mismatch(LAMMPS *lmp, const BuildSignature &built)
 {
   std::string why;
   if (built.version != lmp->version)
-    why += "  LAMMPS version: plugin built for '" + built.version + "', running '" +
-        lmp->version + "'\n";
+    why += "  LAMMPS version: plugin built for '" + built.version + "', running '" + lmp->version +
+        "'\n";
   struct {
     const char *name;
     int built;

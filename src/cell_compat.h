@@ -17,10 +17,10 @@ namespace CellMech {
 
 // What this plugin was compiled with.
 struct BuildSignature {
-  std::string version;       // LAMMPS_VERSION string, e.g. "4 Feb 2025"
+  std::string version;             // LAMMPS_VERSION string, e.g. "4 Feb 2025"
   int bigint, tagint, imageint;    // sizeof() of LAMMPS integer types
-  std::string mpi_vendor;    // as LAMMPS's platform::mpi_vendor() spells it
-  int mpi_major;             // MPI standard version of the mpi.h used
+  std::string mpi_vendor;          // as LAMMPS's platform::mpi_vendor() spells it
+  int mpi_major;                   // MPI standard version of the mpi.h used
 };
 
 BuildSignature compiled_signature();

@@ -101,7 +101,6 @@ inline double sheet_force_A2(double G, double L0, double t0, double lam)
   return G * L0 * t0 * (lam * lam - 1.0 / lam) * std::sqrt(lam);
 }
 
-
 /* ---------------------------------------------------------------------
    SPH protoplasm (Eqs. 3-10)
 ------------------------------------------------------------------------ */

@@ -64,7 +64,8 @@ ComputeCellProps::ComputeCellProps(LAMMPS *_lmp, int narg, char **arg) :
                  arg[iarg]);
   }
   if (!atom->molecule_flag)
-    error->all(FLERR, "Compute cell/props requires molecule IDs (one per cell): atom_style molecular");
+    error->all(FLERR,
+               "Compute cell/props requires molecule IDs (one per cell): atom_style molecular");
   array_flag = 1;
   size_array_cols = NCOL;
   size_array_rows = 0;

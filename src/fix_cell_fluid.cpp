@@ -60,7 +60,8 @@ FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
                narg - 3);
   modify_param(narg - 3, &arg[3]);
   if (!atom->molecule_flag)
-    error->all(FLERR, "Fix cell/fluid requires molecule IDs (one per cell): use atom_style molecular");
+    error->all(FLERR,
+               "Fix cell/fluid requires molecule IDs (one per cell): use atom_style molecular");
   // positions are left to fix nve & co.; this fix advances density and mass only
   time_integrate = 0;
   vector_flag = 1;
@@ -93,19 +94,20 @@ int FixCellFluid::modify_param(int narg, char **arg)
 {
   int iarg = 0;
   while (iarg < narg) {
-    if (iarg + 2 > narg)
-      error->all(FLERR, "fix cell/fluid: keyword '{}' needs a value", arg[iarg]);
+    if (iarg + 2 > narg) error->all(FLERR, "fix cell/fluid: keyword '{}' needs a value", arg[iarg]);
     if (strcmp(arg[iarg], "Pi") == 0) {
       Pi = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (Pi > 0.0)
-        error->all(FLERR, "fix cell/fluid: osmotic potential Pi must be <= 0 (water potential), got {}",
+        error->all(FLERR,
+                   "fix cell/fluid: osmotic potential Pi must be <= 0 (water potential), got {}",
                    Pi);
     } else if (strcmp(arg[iarg], "Lp") == 0) {
       Lp = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (Lp < 0.0)
         error->all(FLERR, "fix cell/fluid: hydraulic conductivity Lp must be >= 0, got {}", Lp);
     } else
-      error->all(FLERR, "Unknown keyword '{}' for fix cell/fluid: expected 'Pi' or 'Lp'", arg[iarg]);
+      error->all(FLERR, "Unknown keyword '{}' for fix cell/fluid: expected 'Pi' or 'Lp'",
+                 arg[iarg]);
     iarg += 2;
   }
   return iarg;
@@ -150,13 +152,13 @@ void FixCellFluid::grow_cells()
   if (flux_restart) {
     // the restart's totals were kept on rank 0 only, so they are summed once
     if (comm->me == 0)
-      for (int m = 1; m <= ncells && m <= (int) flux_restart[0]; m++) flux_local[m] += flux_restart[m];
+      for (int m = 1; m <= ncells && m <= (int) flux_restart[0]; m++)
+        flux_local[m] += flux_restart[m];
     memory->destroy(flux_restart);
   }
   size_vector = ncells;
   flux_stale = 1;
 }
-
 
 /* ----------------------------------------------------------------------
    wall area (triangles = angles, counted once with newton_bond on) and

@@ -33,7 +33,7 @@ class FixCellFluid : public Fix {
 
  protected:
   double Pi, Lp;
-  double dt;                        // step of the level where the SPH forces are
+  double dt;    // step of the level where the SPH forces are
   int ilevel_respa;
   int ncells;                       // largest molecule ID: cells are 1..ncells
   double *area, *nfluid;            // per cell, current wall area and fluid count

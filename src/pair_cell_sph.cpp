@@ -114,7 +114,8 @@ void PairCellSPH::compute(int eflag, int vflag)
         // internal energy e(rho) = int_rho0^rho P/r^2 dr of the Tait law
         const double k = rho0[t] * c[t] * c[t] / 7.0;
         const double r6 = pow(rho[i] / rho0[t], 6.0);
-        const double e = (P0[t] - k) * (1.0 / rho0[t] - 1.0 / rho[i]) + k / rho0[t] * (r6 - 1.0) / 6.0;
+        const double e =
+            (P0[t] - k) * (1.0 / rho0[t] - 1.0 / rho[i]) + k / rho0[t] * (r6 - 1.0) / 6.0;
         const double ei = rmass[i] * e;
         if (eflag_global) eng_vdwl += ei;
         if (eflag_atom) eatom[i] += ei;
@@ -215,8 +216,9 @@ void PairCellSPH::continuity()
       if (rsq >= cutsq[itype][jtype]) continue;
       const double r = sqrt(rsq);
       const double wr = kernel_dwdr(r, s[itype][jtype]) / r;
-      const double vdotw = ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
-                            (v[i][2] - v[j][2]) * delz) * wr;
+      const double vdotw =
+          ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz) *
+          wr;
       drho[i] += rmass[j] * vdotw;
       if (newton_pair || j < nlocal) drho[j] += rmass[i] * vdotw;
     }
@@ -281,7 +283,8 @@ void PairCellSPH::coeff(int narg, char **arg)
     const double mu_one = utils::numeric(FLERR, arg[5], false, lmp);
     const double s_one = utils::numeric(FLERR, arg[6], false, lmp);
     if (rho0_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: reference density rho0 must be > 0, got {}", rho0_one);
+      error->all(FLERR, "pair_coeff cell/sph: reference density rho0 must be > 0, got {}",
+                 rho0_one);
     if (c_one <= 0.0)
       error->all(FLERR, "pair_coeff cell/sph: sound speed c must be > 0, got {}", c_one);
     if (mu_one < 0.0)
@@ -326,11 +329,13 @@ void PairCellSPH::init_style()
   int flag, cols;
   irho = atom->find_custom("rho", flag, cols);
   if (irho < 0 || flag != 1 || cols != 0)
-    error->all(FLERR, "Pair style cell/sph requires the per-atom density d_rho of fix property/atom");
+    error->all(FLERR,
+               "Pair style cell/sph requires the per-atom density d_rho of fix property/atom");
   idrho = atom->find_custom("drho", flag, cols);
   if (idrho < 0 || flag != 1 || cols != 0)
-    error->all(FLERR,
-               "Pair style cell/sph requires the per-atom density rate d_drho of fix property/atom");
+    error->all(
+        FLERR,
+        "Pair style cell/sph requires the per-atom density rate d_drho of fix property/atom");
   if (!comm->ghost_velocity)
     error->all(FLERR,
                "Pair style cell/sph requires 'comm_modify vel yes' (viscosity and continuity use "

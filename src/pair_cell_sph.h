@@ -46,12 +46,12 @@ class PairCellSPH : public Pair {
   double *drho_array() const;    // per-atom continuity rate d_drho
 
  protected:
-  int *fluid;                          // per type: 1 if a fluid type (pair_coeff I I set)
-  double *rho0, *c, *P0, *mu;          // per type
-  double **s;                          // per type pair: smoothing length (cutoff 2s)
-  int irho, idrho;                     // indices of d_rho, d_drho in atom->dvector
+  int *fluid;                    // per type: 1 if a fluid type (pair_coeff I I set)
+  double *rho0, *c, *P0, *mu;    // per type
+  double **s;                    // per type pair: smoothing length (cutoff 2s)
+  int irho, idrho;               // indices of d_rho, d_drho in atom->dvector
   int nmax;
-  double *prho2;                       // P / rho^2 of local and ghost atoms, once per step
+  double *prho2;    // P / rho^2 of local and ghost atoms, once per step
 
   void allocate();
 };

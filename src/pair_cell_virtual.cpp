@@ -210,8 +210,9 @@ void PairCellVirtual::coeff(int narg, char **arg)
 void PairCellVirtual::init_style()
 {
   if (!atom->molecular || !atom->avec->angles_allow)
-    error->all(FLERR, "Pair style cell/virtual requires an atom style with angles (the wall "
-                      "triangles), e.g. atom_style molecular");
+    error->all(FLERR,
+               "Pair style cell/virtual requires an atom style with angles (the wall "
+               "triangles), e.g. atom_style molecular");
   if (!force->newton_bond)
     error->all(FLERR, "Pair style cell/virtual requires newton_bond on (each triangle once)");
   if (!force->newton_pair)

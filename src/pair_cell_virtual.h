@@ -33,7 +33,7 @@ class PairCellVirtual : public Pair {
   void *extract(const char *, int &) override;
 
  protected:
-  double reach;                   // bound on |barycentre - central node| of a triangle
+  double reach;    // bound on |barycentre - central node| of a triangle
   double **f0, **r0, **gamma;
 
   void allocate();

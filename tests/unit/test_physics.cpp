@@ -30,8 +30,8 @@ TEST(Tether, ForceIsMinusEnergyDerivative)
   for (double lam : {0.7, 0.9, 0.99, 1.005, 1.03, 1.1, 1.3}) {
     const double h = 1e-6 * L0;
     const double l = lam * L0;
-    const double dU = (tether_energy(G, T0, L0, (l + h) / L0) -
-                       tether_energy(G, T0, L0, (l - h) / L0)) /
+    const double dU =
+        (tether_energy(G, T0, L0, (l + h) / L0) - tether_energy(G, T0, L0, (l - h) / L0)) /
         (2.0 * h);
     const double f = tether_tension(G, T0, L0, lam);
     const double err = std::fabs(dU - f) / std::fabs(f);
@@ -44,8 +44,8 @@ TEST(Tether, ForceIsMinusEnergyDerivative)
 TEST(Tether, SmallStrainStiffnessIsEq20)
 {
   const double h = 1e-6;
-  const double k_fd = (tether_tension(G, T0, L0, 1.0 + h) - tether_tension(G, T0, L0, 1.0 - h)) /
-      (2.0 * h * L0);
+  const double k_fd =
+      (tether_tension(G, T0, L0, 1.0 + h) - tether_tension(G, T0, L0, 1.0 - h)) / (2.0 * h * L0);
   const double k = 6.0 * G * T0 / std::sqrt(3.0);
   std::printf("stiffness: finite difference %.10g  6 G t0/sqrt3 %.10g  (%.6g N/m)\n", k_fd, k,
               k * 1e-3);
@@ -121,7 +121,9 @@ TEST(Kernel, IntegratesToOneIn3D)
   // (b-a) h^4 max|f''''| / 180, about 1e-13 with 2000 panels per piece here; the tolerance 1e-10
   // leaves room for round-off of the 4000 terms (~1e-13) and nothing else.
   for (double s : {0.5, 1.2, 3.2}) {
-    auto W = [s](double r) { return kernel_w(r, s); };
+    auto W = [s](double r) {
+      return kernel_w(r, s);
+    };
     const double I = radial_simpson(W, 0.0, s, 2000) + radial_simpson(W, s, 2.0 * s, 2000);
     std::printf("s %.2f  int 4 pi r^2 W dr = %.15f  error %.2e\n", s, I, std::fabs(I - 1.0));
     EXPECT_LT(std::fabs(I - 1.0), 1e-10);
@@ -135,7 +137,9 @@ TEST(Kernel, PaperPrefactorWouldIntegrateToFourNinths)
   // kernel is the implemented one rescaled by the ratio of the two prefactors.
   const double s = 3.2;
   const double ratio = (2.0 / (3.0 * M_PI * s * s * s)) / (3.0 / (2.0 * M_PI * s * s * s));
-  auto Wpaper = [s, ratio](double r) { return ratio * kernel_w(r, s); };
+  auto Wpaper = [s, ratio](double r) {
+    return ratio * kernel_w(r, s);
+  };
   const double I = radial_simpson(Wpaper, 0.0, s, 2000) + radial_simpson(Wpaper, s, 2.0 * s, 2000);
   std::printf("printed prefactor 2/(3 pi s^3): integral %.15f  (4/9 = %.15f, error %.2e)\n", I,
               4.0 / 9.0, std::fabs(I - 4.0 / 9.0));
@@ -180,8 +184,8 @@ TEST(Kernel, ExactlyZeroOutsideSupport)
 {
   // compact support 2s: the pair cutoff is 2s, so W and dW/dr must vanish exactly there and beyond
   for (double s : {0.5, 1.2, 3.2}) {
-    for (double r : {2.0 * s, std::nextafter(2.0 * s, 10.0 * s), 2.0001 * s, 2.5 * s, 10.0 * s,
-                     1e6 * s}) {
+    for (double r :
+         {2.0 * s, std::nextafter(2.0 * s, 10.0 * s), 2.0001 * s, 2.5 * s, 10.0 * s, 1e6 * s}) {
       EXPECT_EQ(kernel_w(r, s), 0.0) << "r/s = " << r / s;
       EXPECT_EQ(kernel_dwdr(r, s), 0.0) << "r/s = " << r / s;
     }
@@ -200,7 +204,9 @@ TEST(Tait, ReferencePressureAndSoundSpeed)
   // (kappa = rho0 c^2/7), so c is the sound speed of the linearised fluid. Central difference with
   // h = 1e-6 rho0: truncation h^2 P'''/6 = 5 (h/rho0)^2 c^2 = 5e-12 c^2, round-off
   // eps P / h ~ 2e-10 P0 / rho0; against c^2 >= 1e4 both are below 1e-9 relative.
-  struct Case { double rho0, c, P0; };
+  struct Case {
+    double rho0, c, P0;
+  };
   for (const Case &k : {Case{1.0, 264.6, 364.0}, Case{1.0, 20.0, 100.0}, Case{1000.0, 264.6, 0.0},
                         Case{1.0, 1500.0, -50.0}}) {
     EXPECT_EQ(tait_pressure(k.rho0, k.rho0, k.c, k.P0), k.P0);

@@ -110,8 +110,7 @@ TEST_F(Lmp, Repulsion84InLammps)
   cmds({"units micro", "atom_style atomic", "atom_modify map array",
         "region box block -10 10 -10 10 -10 10", "create_box 2 box", "mass * 1.0",
         "create_atoms 1 single 0 0 0", "create_atoms 2 single 0 " + std::to_string(r) + " 0",
-        "pair_style cell/lj84", "pair_coeff * * " + std::to_string(f0) + " " +
-            std::to_string(r0),
+        "pair_style cell/lj84", "pair_coeff * * " + std::to_string(f0) + " " + std::to_string(r0),
         "run 0"});
   const double expect = f0 * (std::pow(r0 / r, 8) - std::pow(r0 / r, 4)) / r;
   std::printf("8-4 repulsion at r %.2f: LAMMPS %.10g  Eq.12 %.10g\n", r, -f(1, 1), expect);
@@ -175,7 +174,6 @@ TEST_F(Lmp, PairBadInput)
   EXPECT_ERROR("run 0", "cell/lj84 with contact damping gamma > 0 requires 'comm_modify vel yes'");
 }
 
-
 // ---------------------------------------------------------------- fluid styles: bad input
 
 class Fluid : public Lmp {
@@ -188,8 +186,10 @@ class Fluid : public Lmp {
           "create_box 2 box bond/types 1 angle/types 1 extra/bond/per/atom 3 "
           "extra/angle/per/atom 3 extra/special/per/atom 6",
           "create_atoms 2 single 0 0 0", "create_atoms 2 single 1 0 0"});
-    if (with_props) cmds({"set type 2 mass 1.0", "set type 2 d_rho 1.0"});
-    else cmd("mass * 1.0");
+    if (with_props)
+      cmds({"set type 2 mass 1.0", "set type 2 d_rho 1.0"});
+    else
+      cmd("mass * 1.0");
   }
 };
 
@@ -232,7 +232,8 @@ TEST_F(Fluid, VirtualBadInput)
 TEST_F(Fluid, FixFluidBadInput)
 {
   box();
-  EXPECT_ERROR("fix f all cell/fluid Pi -100", "expected 'fix ID group cell/fluid Pi value Lp value'");
+  EXPECT_ERROR("fix f all cell/fluid Pi -100",
+               "expected 'fix ID group cell/fluid Pi value Lp value'");
   EXPECT_ERROR("fix f all cell/fluid Pi 100 Lp 1", "osmotic potential Pi must be <= 0");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Lp -1", "hydraulic conductivity Lp must be >= 0");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Lq 1", "Unknown keyword 'Lq' for fix cell/fluid");
