@@ -85,6 +85,10 @@ void ComputeCellProps::init()
   if (!tether) error->all(FLERR, "Compute cell/props requires bond style cell/tether");
   if (!force->newton_bond)
     error->all(FLERR, "Compute cell/props requires newton_bond on (each bond and triangle once)");
+  if (!force->angle)
+    error->all(FLERR,
+               "Compute cell/props requires an angle style (angle_style zero nocoeff) so "
+               "that LAMMPS lists the wall triangles");
 }
 
 void ComputeCellProps::allocate(int n)

@@ -58,7 +58,12 @@ FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
                "Illegal fix cell/fluid command: expected 'fix ID group cell/fluid Pi value Lp "
                "value', got {} arguments after the group",
                narg - 3);
-  modify_param(narg - 3, &arg[3]);
+  if (strcmp(arg[3], "Pi") != 0 || strcmp(arg[5], "Lp") != 0)
+    error->all(FLERR,
+               "Illegal fix cell/fluid command: expected 'Pi value Lp value', got '{} {} {} {}'",
+               arg[3], arg[4], arg[5], arg[6]);
+  modify_param(2, &arg[3]);
+  modify_param(2, &arg[5]);
   if (!atom->molecule_flag)
     error->all(FLERR,
                "Fix cell/fluid requires molecule IDs (one per cell): use atom_style molecular");
@@ -92,25 +97,20 @@ int FixCellFluid::setmask()
 
 int FixCellFluid::modify_param(int narg, char **arg)
 {
-  int iarg = 0;
-  while (iarg < narg) {
-    if (iarg + 2 > narg) error->all(FLERR, "fix cell/fluid: keyword '{}' needs a value", arg[iarg]);
-    if (strcmp(arg[iarg], "Pi") == 0) {
-      Pi = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (Pi > 0.0)
-        error->all(FLERR,
-                   "fix cell/fluid: osmotic potential Pi must be <= 0 (water potential), got {}",
-                   Pi);
-    } else if (strcmp(arg[iarg], "Lp") == 0) {
-      Lp = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (Lp < 0.0)
-        error->all(FLERR, "fix cell/fluid: hydraulic conductivity Lp must be >= 0, got {}", Lp);
-    } else
-      error->all(FLERR, "Unknown keyword '{}' for fix cell/fluid: expected 'Pi' or 'Lp'",
-                 arg[iarg]);
-    iarg += 2;
-  }
-  return iarg;
+  // one keyword-value pair per call: LAMMPS's fix_modify passes what it does not know itself
+  if (narg < 2) error->all(FLERR, "fix cell/fluid: keyword '{}' needs a value", arg[0]);
+  if (strcmp(arg[0], "Pi") == 0) {
+    Pi = utils::numeric(FLERR, arg[1], false, lmp);
+    if (Pi > 0.0)
+      error->all(FLERR,
+                 "fix cell/fluid: osmotic potential Pi must be <= 0 (water potential), got {}", Pi);
+  } else if (strcmp(arg[0], "Lp") == 0) {
+    Lp = utils::numeric(FLERR, arg[1], false, lmp);
+    if (Lp < 0.0)
+      error->all(FLERR, "fix cell/fluid: hydraulic conductivity Lp must be >= 0, got {}", Lp);
+  } else
+    error->all(FLERR, "Unknown keyword '{}' for fix cell/fluid: expected 'Pi' or 'Lp'", arg[0]);
+  return 2;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -124,8 +124,10 @@ void FixCellFluid::init()
   if (!force->newton_bond)
     error->all(FLERR,
                "Fix cell/fluid requires newton_bond on: each wall triangle must be counted once");
-  if (!atom->nangles && Lp > 0.0)
-    error->all(FLERR, "Fix cell/fluid needs the wall triangles (angles) to measure the cell area");
+  if (Lp > 0.0 && (!atom->nangles || !force->angle))
+    error->all(FLERR,
+               "Fix cell/fluid with Lp > 0 needs the wall triangles as angles and an angle "
+               "style (angle_style zero nocoeff) to measure the cell area");
   dt = update->dt;
   ilevel_respa = 0;
   if (utils::strmatch(update->integrate_style, "^respa")) {
@@ -188,7 +190,8 @@ void FixCellFluid::cell_geometry()
     if (m >= 1 && m <= ncells) local[m] += 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
   }
   for (int i = 0; i < atom->nlocal; i++)
-    if ((mask[i] & groupbit) && molecule[i] >= 1 && molecule[i] <= ncells)
+    if ((mask[i] & groupbit) && sph->is_fluid(atom->type[i]) && molecule[i] >= 1 &&
+        molecule[i] <= ncells)
       local[ncells + 1 + molecule[i]] += 1.0;
   MPI_Allreduce(local.data(), all.data(), 2 * (ncells + 1), MPI_DOUBLE, MPI_SUM, world);
   for (int m = 0; m <= ncells; m++) {

@@ -213,6 +213,10 @@ void PairCellVirtual::init_style()
     error->all(FLERR,
                "Pair style cell/virtual requires an atom style with angles (the wall "
                "triangles), e.g. atom_style molecular");
+  if (!force->angle)
+    error->all(FLERR,
+               "Pair style cell/virtual requires an angle style (angle_style zero nocoeff): "
+               "without one LAMMPS lists no triangles and the wall has no virtual particles");
   if (!force->newton_bond)
     error->all(FLERR, "Pair style cell/virtual requires newton_bond on (each triangle once)");
   if (!force->newton_pair)

@@ -224,8 +224,9 @@ TEST_F(Fluid, VirtualBadInput)
   cmd("pair_style cell/virtual 2.0");
   EXPECT_ERROR("pair_coeff 1 2 1.0", "pair_coeff cell/virtual.*expected.*f0 r0 \\[gamma\\]");
   EXPECT_ERROR("pair_coeff 1 2 1.0 0", "contact distance r0 must be > 0");
-  cmds({"pair_coeff 1 2 1.0 1.5", "pair_coeff 1 1 0.0 1.0", "pair_coeff 2 2 0.0 1.0",
-        "newton off on"});
+  cmds({"pair_coeff 1 2 1.0 1.5", "pair_coeff 1 1 0.0 1.0", "pair_coeff 2 2 0.0 1.0"});
+  EXPECT_ERROR("run 0", "cell/virtual requires an angle style");
+  cmds({"angle_style zero nocoeff", "angle_coeff *", "newton off on"});
   EXPECT_ERROR("run 0", "cell/virtual requires newton_pair on");
 }
 
@@ -236,10 +237,13 @@ TEST_F(Fluid, FixFluidBadInput)
                "expected 'fix ID group cell/fluid Pi value Lp value'");
   EXPECT_ERROR("fix f all cell/fluid Pi 100 Lp 1", "osmotic potential Pi must be <= 0");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Lp -1", "hydraulic conductivity Lp must be >= 0");
-  EXPECT_ERROR("fix f all cell/fluid Pi -100 Lq 1", "Unknown keyword 'Lq' for fix cell/fluid");
+  EXPECT_ERROR("fix f all cell/fluid Pi -100 Lq 1",
+               "expected 'Pi value Lp value', got 'Pi -100 Lq 1'");
+  EXPECT_ERROR("fix f all cell/fluid Pi -100 Pi -1", "expected 'Pi value Lp value'");
   cmds({"fix f all cell/fluid Pi -100 Lp 0", "pair_style zero 3.0", "pair_coeff * *"});
   EXPECT_ERROR("run 0", "Fix cell/fluid requires pair style cell/sph");
   EXPECT_ERROR("fix_modify f Pi 5", "osmotic potential Pi must be <= 0");
+  EXPECT_ERROR("fix_modify f Pj 5", "Unknown keyword 'Pj' for fix cell/fluid");
 }
 
 TEST_F(Fluid, ComputePropsBadInput)
