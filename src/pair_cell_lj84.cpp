@@ -26,7 +26,8 @@ using namespace CellPhysics;
 
 /* ---------------------------------------------------------------------- */
 
-PairCellLJ84::PairCellLJ84(LAMMPS *_lmp) : Pair(_lmp), f0(nullptr), r0(nullptr), gamma(nullptr)
+PairCellLJ84::PairCellLJ84(LAMMPS *_lmp, const char *name) :
+    Pair(_lmp), style_name(name), f0(nullptr), r0(nullptr), gamma(nullptr)
 {
   writedata = 1;
 }
@@ -137,9 +138,9 @@ void PairCellLJ84::coeff(int narg, char **arg)
 {
   if (narg != 4 && narg != 5)
     error->all(FLERR,
-               "Incorrect number of args for pair_coeff cell/lj84: expected "
+               "Incorrect number of args for pair_coeff {}: expected "
                "'pair_coeff I J f0 r0 [gamma]', got {} arguments",
-               narg);
+               style_name, narg);
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -150,11 +151,11 @@ void PairCellLJ84::coeff(int narg, char **arg)
   const double r0_one = utils::numeric(FLERR, arg[3], false, lmp);
   const double gamma_one = (narg == 5) ? utils::numeric(FLERR, arg[4], false, lmp) : 0.0;
   if (f0_one < 0.0)
-    error->all(FLERR, "pair_coeff cell/lj84: strength f0 must be >= 0, got {}", f0_one);
+    error->all(FLERR, "pair_coeff {}: strength f0 must be >= 0, got {}", style_name, f0_one);
   if (r0_one <= 0.0)
-    error->all(FLERR, "pair_coeff cell/lj84: contact distance r0 must be > 0, got {}", r0_one);
+    error->all(FLERR, "pair_coeff {}: contact distance r0 must be > 0, got {}", style_name, r0_one);
   if (gamma_one < 0.0)
-    error->all(FLERR, "pair_coeff cell/lj84: contact damping gamma must be >= 0, got {}",
+    error->all(FLERR, "pair_coeff {}: contact damping gamma must be >= 0, got {}", style_name,
                gamma_one);
 
   int count = 0;
@@ -172,7 +173,7 @@ void PairCellLJ84::coeff(int narg, char **arg)
 
 /* ---------------------------------------------------------------------- */
 
-void PairCellLJ84::init_style()
+void PairCellLJ84::require_ghost_velocities()
 {
   bool damped = false;
   for (int i = 1; i <= atom->ntypes; i++)
@@ -180,8 +181,14 @@ void PairCellLJ84::init_style()
       if (setflag[i][j] && gamma[i][j] > 0.0) damped = true;
   if (damped && !comm->ghost_velocity)
     error->all(FLERR,
-               "Pair style cell/lj84 with contact damping gamma > 0 requires 'comm_modify vel yes' "
-               "(ghost velocities)");
+               "Pair style {} with contact damping gamma > 0 requires 'comm_modify vel yes' "
+               "(ghost velocities)",
+               style_name);
+}
+
+void PairCellLJ84::init_style()
+{
+  require_ghost_velocities();
   neighbor->add_request(this);
 }
 

@@ -18,7 +18,7 @@ namespace LAMMPS_NS {
 
 class PairCellLJ84 : public Pair {
  public:
-  PairCellLJ84(class LAMMPS *);
+  PairCellLJ84(class LAMMPS *, const char *name = "cell/lj84");
   ~PairCellLJ84() override;
   void compute(int, int) override;
   void settings(int, char **) override;
@@ -33,9 +33,11 @@ class PairCellLJ84 : public Pair {
   void *extract(const char *, int &) override;
 
  protected:
+  const char *style_name;    // for messages: cell/virtual shares the coefficients and their checks
   double **f0, **r0, **gamma;
 
   void allocate();
+  void require_ghost_velocities();    // if any contact is damped
 };
 
 }    // namespace LAMMPS_NS

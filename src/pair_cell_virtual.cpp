@@ -12,6 +12,8 @@
    newton_bond on) with cutoff r0 + reach, reach >= |B - x_b|. Forces on
    ghost nodes and ghost fluid reach their owners by the reverse
    communication of newton_pair on.
+   pair_coeff I J f0 r0 [gamma] (as cell/lj84): triangles whose central node
+   has type I (or J) repel particles of type J (or I).
 ------------------------------------------------------------------------- */
 
 #include "pair_cell_virtual.h"
@@ -32,23 +34,13 @@
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
 
-PairCellVirtual::PairCellVirtual(LAMMPS *_lmp) :
-    Pair(_lmp), reach(0.0), f0(nullptr), r0(nullptr), gamma(nullptr)
+PairCellVirtual::PairCellVirtual(LAMMPS *_lmp) : PairCellLJ84(_lmp, "cell/virtual"), reach(0.0)
 {
   // forces act on three nodes per virtual particle; the fdotr virial over all owned and ghost
-  // atoms is exact for them
-  no_virial_fdotr_compute = 0;
-}
-
-PairCellVirtual::~PairCellVirtual()
-{
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
-    memory->destroy(f0);
-    memory->destroy(r0);
-    memory->destroy(gamma);
-  }
+  // atoms is exact for them. A pair of atoms means nothing here: no single(), no pair_write,
+  // and the coefficients are between wall and fluid types, not per type for write_data.
+  single_enable = 0;
+  writedata = 0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -137,19 +129,6 @@ void PairCellVirtual::compute(int eflag, int vflag)
 
 /* ---------------------------------------------------------------------- */
 
-void PairCellVirtual::allocate()
-{
-  allocated = 1;
-  const int np1 = atom->ntypes + 1;
-  memory->create(setflag, np1, np1, "pair:setflag");
-  for (int i = 1; i < np1; i++)
-    for (int j = i; j < np1; j++) setflag[i][j] = 0;
-  memory->create(cutsq, np1, np1, "pair:cutsq");
-  memory->create(f0, np1, np1, "pair:f0");
-  memory->create(r0, np1, np1, "pair:r0");
-  memory->create(gamma, np1, np1, "pair:gamma");
-}
-
 /* ----------------------------------------------------------------------
    pair_style cell/virtual reach
 ------------------------------------------------------------------------- */
@@ -169,44 +148,6 @@ void PairCellVirtual::settings(int narg, char **arg)
                reach);
 }
 
-/* ----------------------------------------------------------------------
-   pair_coeff I J f0 r0 [gamma]: triangles with central node of type I
-   (or J) repel particles of type J (or I)
-------------------------------------------------------------------------- */
-
-void PairCellVirtual::coeff(int narg, char **arg)
-{
-  if (narg != 4 && narg != 5)
-    error->all(FLERR,
-               "Incorrect number of args for pair_coeff cell/virtual: expected "
-               "'pair_coeff I J f0 r0 [gamma]', got {} arguments",
-               narg);
-  if (!allocated) allocate();
-  int ilo, ihi, jlo, jhi;
-  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
-  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  const double f0_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double r0_one = utils::numeric(FLERR, arg[3], false, lmp);
-  const double gamma_one = (narg == 5) ? utils::numeric(FLERR, arg[4], false, lmp) : 0.0;
-  if (f0_one < 0.0)
-    error->all(FLERR, "pair_coeff cell/virtual: strength f0 must be >= 0, got {}", f0_one);
-  if (r0_one <= 0.0)
-    error->all(FLERR, "pair_coeff cell/virtual: contact distance r0 must be > 0, got {}", r0_one);
-  if (gamma_one < 0.0)
-    error->all(FLERR, "pair_coeff cell/virtual: contact damping gamma must be >= 0, got {}",
-               gamma_one);
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = MAX(jlo, i); j <= jhi; j++) {
-      f0[i][j] = f0_one;
-      r0[i][j] = r0_one;
-      gamma[i][j] = gamma_one;
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
-}
-
 void PairCellVirtual::init_style()
 {
   if (!atom->molecular || !atom->avec->angles_allow)
@@ -221,12 +162,7 @@ void PairCellVirtual::init_style()
     error->all(FLERR, "Pair style cell/virtual requires newton_bond on (each triangle once)");
   if (!force->newton_pair)
     error->all(FLERR, "Pair style cell/virtual requires newton_pair on (forces on ghost nodes)");
-  bool damped = false;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++)
-      if (setflag[i][j] && gamma[i][j] > 0.0) damped = true;
-  if (damped && !comm->ghost_velocity)
-    error->all(FLERR, "Pair style cell/virtual with gamma > 0 requires 'comm_modify vel yes'");
+  require_ghost_velocities();
   neighbor->add_request(this, NeighConst::REQ_FULL);
 }
 
@@ -252,49 +188,4 @@ void PairCellVirtual::read_restart_settings(FILE *fp)
 {
   if (comm->me == 0) utils::sfread(FLERR, &reach, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&reach, 1, MPI_DOUBLE, 0, world);
-}
-
-void PairCellVirtual::write_restart(FILE *fp)
-{
-  write_restart_settings(fp);
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      if (setflag[i][j]) {
-        fwrite(&f0[i][j], sizeof(double), 1, fp);
-        fwrite(&r0[i][j], sizeof(double), 1, fp);
-        fwrite(&gamma[i][j], sizeof(double), 1, fp);
-      }
-    }
-}
-
-void PairCellVirtual::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  const int me = comm->me;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      if (setflag[i][j]) {
-        if (me == 0) {
-          utils::sfread(FLERR, &f0[i][j], sizeof(double), 1, fp, nullptr, error);
-          utils::sfread(FLERR, &r0[i][j], sizeof(double), 1, fp, nullptr, error);
-          utils::sfread(FLERR, &gamma[i][j], sizeof(double), 1, fp, nullptr, error);
-        }
-        MPI_Bcast(&f0[i][j], 1, MPI_DOUBLE, 0, world);
-        MPI_Bcast(&r0[i][j], 1, MPI_DOUBLE, 0, world);
-        MPI_Bcast(&gamma[i][j], 1, MPI_DOUBLE, 0, world);
-      }
-    }
-}
-
-void *PairCellVirtual::extract(const char *str, int &dim)
-{
-  dim = 2;
-  if (strcmp(str, "f0") == 0) return (void *) f0;
-  if (strcmp(str, "r0") == 0) return (void *) r0;
-  if (strcmp(str, "gamma") == 0) return (void *) gamma;
-  return nullptr;
 }

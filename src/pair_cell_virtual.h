@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellmech: virtual wall particles (paper Sec. II C): one massless particle
    at the barycentre of each wall triangle repels the fluid with the 8-4
-   law; its reaction is shared by the triangle's three nodes.
+   law of pair cell/lj84 (whose coefficients it shares); its reaction is
+   shared by the triangle's three nodes.
 ------------------------------------------------------------------------- */
 
 #ifdef PAIR_CLASS
@@ -13,30 +14,22 @@ PairStyle(cell/virtual,PairCellVirtual);
 #ifndef LMP_PAIR_CELL_VIRTUAL_H
 #define LMP_PAIR_CELL_VIRTUAL_H
 
-#include "pair.h"
+#include "pair_cell_lj84.h"
 
 namespace LAMMPS_NS {
 
-class PairCellVirtual : public Pair {
+class PairCellVirtual : public PairCellLJ84 {
  public:
   PairCellVirtual(class LAMMPS *);
-  ~PairCellVirtual() override;
   void compute(int, int) override;
   void settings(int, char **) override;
-  void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
-  void write_restart(FILE *) override;
-  void read_restart(FILE *) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
-  void *extract(const char *, int &) override;
 
  protected:
   double reach;    // bound on |barycentre - central node| of a triangle
-  double **f0, **r0, **gamma;
-
-  void allocate();
 };
 
 }    // namespace LAMMPS_NS
