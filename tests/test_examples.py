@@ -15,13 +15,14 @@ DATA = {
     "sheet.data": ("sheet", "--nx", 10, "--ny", 10),
 }
 COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
-# in run order: in.compress continues from the restart file in.inflate writes
+# in run order: in.compress and in.breathing-fluid continue from the restart in.inflate writes
 SHORT = {
     "in.breathing": ("wall3.data", dict(nsteps=200)),
     "in.plates": ("wall3.data", dict(nsteps=300, gap=0.1)),
     "in.sheet": ("sheet.data", dict(lam="1.05")),
     "in.inflate": ("cell3.data", dict(COARSE, nsteps=2000, every=500, restart_out="short.restart")),
     "in.compress": ("cell3.data", dict(COARSE, restart="short.restart", strain=0.01)),
+    "in.breathing-fluid": ("cell3.data", dict(COARSE, restart="short.restart", nsteps=200)),
 }
 
 

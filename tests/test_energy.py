@@ -1,0 +1,45 @@
+"""Issue 5, case 7 (coarse): inviscid energy balance. With viscosity, tether damping, contact damping
+and osmosis off, a cell whose fluid starts at P0 = 100 kPa pushes its wall out and oscillates;
+kinetic + potential energy (tethers, 8-4 contacts, virtual particles and the fluid's internal
+energy sum m e(rho), de/drho = P/rho^2, tallied by pair cell/sph) must be conserved.
+
+Bound: velocity Verlet for the positions with the density leapfrogging the velocities is second
+order and time-reversible; its energy error oscillates with amplitude ~ (omega dt)^2 times the
+energy in the fastest modes, omega ~ c/s = 41 rad/us here, dt = 1 ns: 1.7e-3. Asserted: the
+largest deviation from the initial total stays below 1e-3 of the largest kinetic energy, and the
+secular drift (slope of a linear fit times the run time) below 2e-4 of it.
+"""
+import numpy as np
+
+import lmptest as T
+
+COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+EXTRA = """
+variable        etot equal ke+pe
+variable        kin equal ke
+variable        tt equal time
+fix             erec all ave/time 20 1 20 v_tt v_kin v_etot file energy.dat format " %.15g"
+run             20000
+"""
+
+
+def main():
+    d = T.workdir("energy")
+    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+    T.lmp(f"include {T.INPUTS}/in.inflate\n" + EXTRA, cwd=d, variables=dict(
+        COARSE, dir=T.INPUTS, data="cell.data", nsteps=0, Lp=0.0, Pi=0.0, P0=100.0, mu=0.0,
+        gamma=0.0, gc=0.0))
+    a = T.load(f"{d}/energy.dat")
+    t, ke, e = a[:, 1], a[:, 2], a[:, 3]
+    dev = np.abs(e - e[0]).max() / ke.max()
+    slope = np.polyfit(t, e, 1)[0]
+    drift = abs(slope) * (t[-1] - t[0]) / ke.max()
+    print(f"{len(t)} samples over {t[-1]:g} us: max KE {ke.max():.6g}, total energy {e[0]:.6g} -> "
+          f"{e[-1]:.6g}; max deviation {dev:.2e}, secular drift {drift:.2e} (of max KE)")
+    T.check("inviscid: energy deviation below 1e-3 of the kinetic energy", dev < 1e-3, f"{dev:.1e}")
+    T.check("inviscid: no secular energy drift (2e-4)", drift < 2e-4, f"{drift:.1e}")
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()
