@@ -190,6 +190,42 @@ inline double solid_angle(const double *a, const double *b, const double *c)
   return 2.0 * std::atan2(num, den);
 }
 
+// Squared distance from the origin to triangle (a, b, c): the closest point by Voronoi regions of
+// the vertices, edges and face (Ericson, Real-Time Collision Detection, 5.1.5).
+inline double origin_triangle_dist_sq(const double *a, const double *b, const double *c)
+{
+  auto dot = [](const double *u, const double *v) {
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  };
+  const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double ap[3] = {-a[0], -a[1], -a[2]};
+  const double bp[3] = {-b[0], -b[1], -b[2]};
+  const double cp[3] = {-c[0], -c[1], -c[2]};
+  double q[3];
+  auto at = [&](double u, double v) {    // a + u ab + v ac
+    for (int d = 0; d < 3; d++) q[d] = a[d] + u * ab[d] + v * ac[d];
+    return dot(q, q);
+  };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return dot(a, a);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return dot(b, b);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return at(d1 / (d1 - d3), 0.0);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return dot(c, c);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return at(0.0, d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return at(1.0 - w, w);
+  }
+  const double den = 1.0 / (va + vb + vc);
+  return at(vb * den, vc * den);
+}
+
 }    // namespace CellPhysics
 
 #endif

@@ -37,6 +37,8 @@
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
 
+static constexpr double BIG = 1.0e300;
+
 ComputeCellProps::ComputeCellProps(LAMMPS *_lmp, int narg, char **arg) :
     Compute(_lmp, narg, arg), leaks(1), ncells(0), sph(nullptr), tether(nullptr)
 {
@@ -278,6 +280,15 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
     std::copy(&tris[10 * t + 1], &tris[10 * t + 10], &sorted[9 * fill[m]++]);
   }
 
+  // A ball around the centre that touches no triangle lies wholly inside the closed wall (the
+  // centre being inside): its fluid needs no solid angles. That is most of the fluid.
+  std::vector<double> rin_sq(ncells + 1, BIG);
+  for (int m = 1; m <= ncells; m++)
+    for (int t = start[m]; t < start[m + 1]; t++)
+      rin_sq[m] =
+          MIN(rin_sq[m],
+              origin_triangle_dist_sq(&sorted[9 * t], &sorted[9 * t + 3], &sorted[9 * t + 6]));
+
   std::vector<double> out_local(ncells + 1, 0.0), out_all(ncells + 1);
   for (int i = 0; i < atom->nlocal; i++) {
     const tagint m = molecule[i];
@@ -286,6 +297,7 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
     double p[3];
     for (int d = 0; d < 3; d++) p[d] = x[i][d] - c[3 * m + d];
     domain->minimum_image(p[0], p[1], p[2]);
+    if (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] < rin_sq[m]) continue;
     double omega = 0.0;
     for (int t = start[m]; t < start[m + 1]; t++) {
       const double *v = &sorted[9 * t];

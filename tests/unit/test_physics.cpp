@@ -226,3 +226,43 @@ TEST(Tait, ReferencePressureAndSoundSpeed)
     }
   }
 }
+
+TEST(Geometry, OriginTriangleDistance)
+{
+  // triangle in the plane z = 2 around the z axis: the face is closest
+  const double a[3] = {-1, -1, 2}, b[3] = {2, -1, 2}, c[3] = {-1, 2, 2};
+  EXPECT_NEAR(origin_triangle_dist_sq(a, b, c), 4.0, 1e-14);
+  // shifted so that the origin's foot is beyond edge bc (x + y = 1 line at z = 2)
+  const double a2[3] = {1, 1, 2}, b2[3] = {4, 1, 2}, c2[3] = {1, 4, 2};
+  EXPECT_NEAR(origin_triangle_dist_sq(a2, b2, c2), 1 + 1 + 4, 1e-14);    // vertex a2
+  const double a3[3] = {-3, 1, 0}, b3[3] = {3, 1, 0}, c3[3] = {0, 5, 0};
+  EXPECT_NEAR(origin_triangle_dist_sq(a3, b3, c3), 1.0, 1e-14);    // edge ab
+  // brute force against a dense sampling of random triangles
+  unsigned seed = 12345;
+  auto rnd = [&]() {
+    seed = seed * 1103515245u + 12345u;
+    return ((seed >> 8) & 0xffff) / 32768.0 - 1.0;
+  };
+  double worst = 0.0;
+  for (int trial = 0; trial < 200; trial++) {
+    double p[9];
+    for (double &v : p) v = 3.0 * rnd();
+    double best = 1e300;
+    const int n = 200;
+    for (int i = 0; i <= n; i++)
+      for (int j = 0; i + j <= n; j++) {
+        const double u = (double) i / n, v = (double) j / n;
+        double q[3], d2 = 0.0;
+        for (int d = 0; d < 3; d++) {
+          q[d] = p[d] + u * (p[3 + d] - p[d]) + v * (p[6 + d] - p[d]);
+          d2 += q[d] * q[d];
+        }
+        best = std::min(best, d2);
+      }
+    const double exact = origin_triangle_dist_sq(p, p + 3, p + 6);
+    EXPECT_LE(exact, best + 1e-12);    // never farther than any sampled point
+    worst = std::max(worst, std::sqrt(best) - std::sqrt(exact));
+  }
+  std::printf("closest-point distance vs sampling: sampled points at most %.2e farther\n", worst);
+  EXPECT_LT(worst, 0.05);    // grid spacing 3*sqrt(2)*2/200 bounds how far sampling can miss
+}
