@@ -14,6 +14,7 @@
 
 #include "bond_cell_tether.h"
 #include "compute_cell_props.h"
+#include "compute_cell_shear_atom.h"
 #include "fix_cell_fluid.h"
 #include "pair_cell_lj84.h"
 #include "pair_cell_sph.h"
@@ -49,6 +50,11 @@ static Fix *fix_cell_fluid_creator(LAMMPS *lmp, int argc, char **argv)
 static Compute *compute_cell_props_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new ComputeCellProps(lmp, argc, argv);
+}
+
+static Compute *compute_cell_shear_atom_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new ComputeCellShearAtom(lmp, argc, argv);
 }
 
 extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
@@ -105,5 +111,10 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "cell/props";
   plugin.info = "cellmech per-cell volume, area, pressure, stretch, equatorial force, leaks";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_cell_props_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "cell/shear/atom";
+  plugin.info = "cellmech per-particle protoplasm shear stress (Eqs. 24-26)";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_cell_shear_atom_creator;
   (*register_plugin)(&plugin, lmp);
 }
