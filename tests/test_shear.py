@@ -5,9 +5,11 @@ zero on the centre line, rho0 G L/2 at the walls, whatever the viscosity.
 Setup as tests/test_poiseuille.py (mirror walls, which put the no-slip planes half a spacing out):
 20 fluid layers, dx = 1 um, s = 1.2 um, mu = 1000 mPa s, G = 2 um/us^2, 0.6 us to steady state;
 tau_xy averaged per layer over the last 0.2 us.
-Tolerance 5% (relative L2 over the layers): the SPH gradient of Eq. 25 on this lattice carries the
-factor K = -sum_j V_j dy_j^2 (dW/dr)/r_j = 0.98 (computed in test_poiseuille.py), the velocity
-profile itself is within 2.3% of the exact one, and the bins at the walls see the mirror layers.
+Tolerance 1% (relative L2 over the layers): the SPH gradient of Eq. 25 on this lattice carries the
+factor K = -sum_j V_j dy_j^2 (dW/dr)/r_j = 0.98 (test_poiseuille.py), but so does the Morris
+viscous force, so in steady state the flow settles at the gradient that makes K mu du/dy balance
+the body force and K cancels; what remains is the transient (2e-4), compressibility (Ma^2 = 1e-4)
+and the layers next to the mirror walls.
 Also asserted: tau_xz and tau_yz vanish (below 2% of the wall stress) and |tau| = |tau_xy|.
 """
 import numpy as np
@@ -87,7 +89,7 @@ run             6000
         print(f"{yy:6.2f} {t:9.4f} {e:9.4f}")
     print(f"relative L2 {err:.4f}; max |tau_xz|, |tau_yz| {max(abs(txz).max(), abs(tyz).max()):.2e} "
           f"kPa; wall stress rho0 G L/2 = {wall:g} kPa")
-    T.check("tau_xy = rho0 G (L/2 - y) within 5%", err < 0.05, f"{err:.2%}")
+    T.check("tau_xy = rho0 G (L/2 - y) within 1%", err < 0.01, f"{err:.2%}")
     T.check("tau_xz and tau_yz vanish", max(abs(txz).max(), abs(tyz).max()) < 0.02 * wall)
     T.check("|tau| = |tau_xy| (the only shear component)",
             np.allclose(tau, np.abs(txy), atol=0.02 * wall))
