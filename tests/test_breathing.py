@@ -63,6 +63,25 @@ def main():
             if lam == 1.002:
                 T.check(f"{name} breathing frequency within 1% of Eq. A5", abs(err) < 0.01,
                         f"err {err:+.2%}")
+    # the same stiff wall in SI units (m, kg, s; cellgen --units si): the conversions a user makes.
+    # Positions, masses and moduli scale exactly, so the period must come out 1e-6 times the
+    # micro one, to the round-off of a different floating-point path (1e-9).
+    T.cellgen("cell", "-o", "wall-si.data", "--level", LEVEL, "--radius", R * 1e-6, "--nfluid", 0,
+              "--wall-mass", M * 1e-15, "--units", "si", cwd=d)
+    G, t0, dt, steps = CASES["stiff"]
+    periods = {}
+    for units, data, scale in (("micro", "wall.data", 1.0), ("si", "wall-si.data", 1e-6)):
+        out = f"units-{units}.dat"
+        # micro: G kPa, t0 um, dt us, f0 nN um = 1e-15 J, r0 um; si: Pa, m, s, J, m
+        T.lmp(T.INPUTS + "/in.breathing", cwd=d, variables=dict(
+            data=data, units=units, G=G * (1e3 if units == "si" else 1), t0=t0 * scale, dt=dt * scale,
+            nsteps=steps, lam=1.002, out=out, f0=2.0e5 * (1e-15 if units == "si" else 1),
+            r0=1.5 * scale, cut=6.0 * scale, skin=0.1 * scale))
+        a = T.load(f"{d}/{out}")
+        periods[units] = period(a[:, 1], a[:, 2], R * scale, 2)
+    ratio = periods["si"] / (periods["micro"] * 1e-6)
+    print(f"period: micro {periods['micro']:.10g} us, si {periods['si']:.10g} s, ratio {ratio:.12f}")
+    T.check("units si gives the micro period times 1e-6", abs(ratio - 1) < 1e-9, f"{ratio - 1:+.1e}")
     T.finish()
 
 
