@@ -134,6 +134,11 @@ void FixCellFluid::init()
     auto respa = dynamic_cast<Respa *>(update->integrate);
     ilevel_respa = respa->nlevels - 1;
     dt = respa->step[ilevel_respa];
+    // density must advance where the SPH forces and the continuity rate are computed
+    if (respa->level_pair != ilevel_respa)
+      error->all(FLERR,
+                 "Fix cell/fluid with run_style respa requires the pair styles on the outermost "
+                 "level (e.g. run_style respa 2 2 bond 1 angle 1 pair 2)");
   }
   grow_cells();
 }

@@ -24,6 +24,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 
@@ -340,6 +341,10 @@ void PairCellSPH::init_style()
     error->all(FLERR,
                "Pair style cell/sph requires 'comm_modify vel yes' (viscosity and continuity use "
                "ghost velocities)");
+  // without fix cell/fluid the continuity equation is never integrated: a frozen density is
+  // legal (a fixed boundary of SPH particles) but rarely meant for a whole system
+  if (modify->get_fix_by_style("^cell/fluid").empty() && comm->me == 0)
+    error->warning(FLERR, "Pair style cell/sph without fix cell/fluid: densities stay constant");
   neighbor->add_request(this);
 }
 
