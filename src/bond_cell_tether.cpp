@@ -31,7 +31,7 @@ static constexpr char REF_NAME[] = "cellref";
 
 BondCellTether::BondCellTether(LAMMPS *_lmp) :
     Bond(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), lmax(0.0),
-    nbroken_local(0), checked(0)
+    checked(0)
 {
   born_matrix_enable = 0;
 }
@@ -110,8 +110,6 @@ void BondCellTether::compute(int eflag, int vflag)
       if (i2 < nlocal)
         for (int m = 0; m < atom->num_bond[i2]; m++)
           if (atom->bond_atom[i2][m] == tag[i1]) atom->bond_type[i2][m] = 0;
-      // with newton_bond off both owners see the bond; count it once, on the lower tag
-      if (newton_bond || i2 < nlocal || tag[i1] < tag[i2]) nbroken_local++;
       continue;
     }
 

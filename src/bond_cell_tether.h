@@ -37,10 +37,9 @@ class BondCellTether : public Bond {
 
  protected:
   double *G, *t0, *gamma, *lamf;
-  int iref;                // index of the reference-position array d2_cellref in atom->darray
-  double lmax;             // largest rest length, for the bond-extent check of LAMMPS
-  bigint nbroken_local;    // tethers broken on this rank by stretch > lamf
-  int checked;             // reference positions checked for plausibility in this run
+  int iref;       // index of the reference-position array d2_cellref in atom->darray
+  double lmax;    // largest rest length, for the bond-extent check of LAMMPS
+  int checked;    // reference positions checked for plausibility in this run
 
   void allocate();
 };
