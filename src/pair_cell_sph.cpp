@@ -27,6 +27,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -38,7 +39,7 @@ using namespace CellPhysics;
 
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
-    irho(-1), idrho(-1), nmax(0), prho2(nullptr)
+    irho(-1), idrho(-1), nmax(0), prho2(nullptr), pairs_step(-1)
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -125,53 +126,63 @@ void PairCellSPH::compute(int eflag, int vflag)
       prho2[i] = 0.0;
   }
 
-  const int inum = list->inum;
-  int *ilist = list->ilist;
-  int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const int itype = type[i];
-    if (!fluid[itype]) continue;
-    const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
+  // the force of one interacting pair, with grad_i W = wr * del
+  auto interact = [&](int i, int j, double wr, double delx, double dely, double delz) {
+    const int itype = type[i], jtype = type[j];
     const double mi = rmass[i];
-    int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
+    const double mj = rmass[j];
+    const double dvx = v[i][0] - v[j][0];
+    const double dvy = v[i][1] - v[j][1];
+    const double dvz = v[i][2] - v[j][2];
 
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const int jtype = type[j];
-      if (!fluid[jtype]) continue;
-      const double delx = xtmp - x[j][0];
-      const double dely = ytmp - x[j][1];
-      const double delz = ztmp - x[j][2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsq[itype][jtype]) continue;
+    // pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
+    const double fp = -mi * mj * (prho2[i] + prho2[j]) * wr;
+    const double fv = mi * mj * (mu[itype] + mu[jtype]) / (rho[i] * rho[j]) * wr;
+    const double fx = fp * delx + fv * dvx;
+    const double fy = fp * dely + fv * dvy;
+    const double fz = fp * delz + fv * dvz;
 
-      const double r = sqrt(rsq);
-      const double wr = kernel_dwdr(r, s[itype][jtype]) / r;    // grad_i W = wr * del
-      const double mj = rmass[j];
-      const double dvx = v[i][0] - v[j][0];
-      const double dvy = v[i][1] - v[j][1];
-      const double dvz = v[i][2] - v[j][2];
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= fx;
+      f[j][1] -= fy;
+      f[j][2] -= fz;
+    }
+    if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+  };
 
-      // pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
-      const double fp = -mi * mj * (prho2[i] + prho2[j]) * wr;
-      const double fv = mi * mj * (mu[itype] + mu[jtype]) / (rho[i] * rho[j]) * wr;
-      const double fx = fp * delx + fv * dvx;
-      const double fy = fp * dely + fv * dvy;
-      const double fz = fp * delz + fv * dvz;
-
-      f[i][0] += fx;
-      f[i][1] += fy;
-      f[i][2] += fz;
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= fx;
-        f[j][1] -= fy;
-        f[j][2] -= fz;
+  if (pairs_step == update->ntimestep) {
+    // continuity() found the interacting pairs and their kernel gradients at these positions, in
+    // pre_force just before this call. Used once: any later call this step (run 0 after moving
+    // atoms, a line search) recomputes them.
+    for (std::size_t k = 0; k < pair_i.size(); k++)
+      interact(pair_i[k], pair_j[k], pair_wr[k], pair_del[3 * k], pair_del[3 * k + 1],
+               pair_del[3 * k + 2]);
+    pairs_step = -1;
+  } else {
+    const int inum = list->inum;
+    int *ilist = list->ilist;
+    int *numneigh = list->numneigh;
+    int **firstneigh = list->firstneigh;
+    for (int ii = 0; ii < inum; ii++) {
+      const int i = ilist[ii];
+      const int itype = type[i];
+      if (!fluid[itype]) continue;
+      int *jlist = firstneigh[i];
+      for (int jj = 0; jj < numneigh[i]; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        const int jtype = type[j];
+        if (!fluid[jtype]) continue;
+        const double delx = x[i][0] - x[j][0];
+        const double dely = x[i][1] - x[j][1];
+        const double delz = x[i][2] - x[j][2];
+        const double rsq = delx * delx + dely * dely + delz * delz;
+        if (rsq >= cutsq[itype][jtype]) continue;
+        const double r = sqrt(rsq);
+        interact(i, j, kernel_dwdr(r, s[itype][jtype]) / r, delx, dely, delz);
       }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
 
@@ -196,6 +207,13 @@ void PairCellSPH::continuity()
   const int nall = nlocal + atom->nghost;
   for (int i = 0; i < (newton_pair ? nall : nlocal); i++) drho[i] = 0.0;
 
+  // keep the interacting pairs for the force call that follows at the same positions
+  pair_i.clear();
+  pair_j.clear();
+  pair_wr.clear();
+  pair_del.clear();
+  pairs_step = update->ntimestep;
+
   const int inum = list->inum;
   int *ilist = list->ilist;
   int *numneigh = list->numneigh;
@@ -217,6 +235,10 @@ void PairCellSPH::continuity()
       if (rsq >= cutsq[itype][jtype]) continue;
       const double r = sqrt(rsq);
       const double wr = kernel_dwdr(r, s[itype][jtype]) / r;
+      pair_i.push_back(i);
+      pair_j.push_back(j);
+      pair_wr.push_back(wr);
+      pair_del.insert(pair_del.end(), {delx, dely, delz});
       const double vdotw =
           ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz) *
           wr;

@@ -15,6 +15,8 @@ PairStyle(cell/sph,PairCellSPH);
 
 #include "pair.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairCellSPH : public Pair {
@@ -52,6 +54,10 @@ class PairCellSPH : public Pair {
   int irho, idrho;               // indices of d_rho, d_drho in atom->dvector
   int nmax;
   double *prho2;    // P / rho^2 of local and ghost atoms, once per step
+  // interacting pairs found by continuity() at this step's positions, reused by compute()
+  bigint pairs_step;
+  std::vector<int> pair_i, pair_j;
+  std::vector<double> pair_wr, pair_del;
 
   void allocate();
 };
