@@ -160,9 +160,11 @@ inline double osmotic_mass_rate(double area, double Lp, double rho, int nfluid, 
 // Mass taken up in one step dt by a particle of mass m and density rho at pressure P, with
 // k = A_c L_p rho / N_f: Eq. 10 linearised in the step's own mass change,
 //   dm = -k dt (P + Pi + dP/drho (rho/m) dm),
-// because the uptake raises the density (Eq. 9) and so the pressure. Explicit Euler is unstable
-// once k dt dP/drho rho/m > 2, i.e. for the large conductivities that inflate a cell quickly; this
-// form relaxes P towards -Pi without overshoot for any k dt and tends to Eq. 10 as k dt -> 0.
+// because the uptake raises the density (Eq. 9) and so the pressure. Explicit Euler diverges once
+// k dt dP/drho rho/m > 2, i.e. for the large conductivities that inflate a cell quickly. This form
+// tends to Eq. 10 as k dt -> 0 and, as k dt -> infinity, becomes a Newton step towards P = -Pi:
+// the error contracts every step for any k dt (the convex Tait law makes the first large step
+// overshoot by its curvature, 1.4% from 0 to 364 kPa, which the next steps remove).
 inline double osmotic_mass_step(double k, double dt, double P, double Pi, double dPdrho, double rho,
                                 double m)
 {
