@@ -16,7 +16,7 @@ def table(path):
 def main(out):
     # inflate.dat: step t V A P M Nf lam lammax Feq leak dM
     a = table(f"{out}/inflate.dat")
-    t, P, lam, Feq, leak, M = a[:, 1], a[:, 5], a[:, 7], a[:, 9], a[:, 10], a[:, 4]
+    t, P, lam, Feq, leak, M = a[:, 1], a[:, 4], a[:, 7], a[:, 9], a[:, 10], a[:, 5]
     np.savetxt(f"{out}/inflation.csv", np.column_stack([t, P, lam, Feq * 1e-3, M, leak]), delimiter=",",
                header="time_us,mean_pressure_kPa,mean_stretch,equatorial_force_uN,fluid_mass_pg,leaked",
                comments="")
