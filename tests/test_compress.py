@@ -44,6 +44,20 @@ def main():
         T.check(f"v={v}: both plates carry the same load (5%)", imb < 0.05, f"max {imb:.1%}")
         T.check(f"v={v}: reaches 20% strain (last output within 0.5%) with positive pressure",
                 eps[-1] > 0.195 and P.min() > 0)
+    # the main job's plotting step (tools/plot_main.py) on these outputs: CSV columns as labelled
+    import shutil
+    import subprocess
+    import sys
+    shutil.copy(f"{d}/compress-0.5.dat", f"{d}/compress.dat")
+    subprocess.run([sys.executable, T.ROOT + "/tools/plot_main.py", d], check=True)
+    inf = np.genfromtxt(f"{d}/inflation.csv", delimiter=",", names=True)
+    fs = np.genfromtxt(f"{d}/force-strain.csv", delimiter=",", names=True)
+    T.check("main-job CSV: final mean pressure is the turgor (1%)",
+            abs(inf["mean_pressure_kPa"][-1] / 364.0 - 1) < 0.01, f"{inf['mean_pressure_kPa'][-1]:.2f}")
+    T.check("main-job CSV: strain runs from 0 to 20%, forces in uN",
+            fs["strain"][0] >= 0 and fs["strain"][-1] > 0.195 and
+            abs(fs["F_top_uN"][-1] * 1e3 / T.load(f"{d}/compress-0.5.dat")[-1, 3] - 1) < 1e-9)
+
     diff = curves[0.5] / curves[0.25] - 1
     print("rate difference per window: " + " ".join(f"{x:+.2%}" for x in diff))
     T.check("two quasistatic rates give the same curve within 2%", np.all(abs(diff) < 0.02),
