@@ -16,6 +16,7 @@
 #include "compute_cell_props.h"
 #include "compute_cell_shear_atom.h"
 #include "fix_cell_fluid.h"
+#include "fix_cell_vtk.h"
 #include "pair_cell_lj84.h"
 #include "pair_cell_sph.h"
 #include "pair_cell_virtual.h"
@@ -45,6 +46,11 @@ static Pair *pair_cell_virtual_creator(LAMMPS *lmp)
 static Fix *fix_cell_fluid_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new FixCellFluid(lmp, argc, argv);
+}
+
+static Fix *fix_cell_vtk_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixCellVTK(lmp, argc, argv);
 }
 
 static Compute *compute_cell_props_creator(LAMMPS *lmp, int argc, char **argv)
@@ -105,6 +111,11 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.name = "cell/fluid";
   plugin.info = "cellmech density and osmotic mass integration of the protoplasm";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_cell_fluid_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "cell/vtk";
+  plugin.info = "cellmech cell walls as VTK triangulated surfaces for ParaView";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_cell_vtk_creator;
   (*register_plugin)(&plugin, lmp);
 
   plugin.style = "compute";

@@ -1,0 +1,194 @@
+/* ----------------------------------------------------------------------
+   cellmech: fix cell/vtk
+
+   fix ID group cell/vtk N prefix
+
+   Every N steps (and at the start of a run) writes prefix.STEP.vtk, a
+   legacy-format VTK PolyData file with the wall nodes of the group as
+   points (unwrapped coordinates) and the wall triangles (the angles of the
+   topology) as polygons:
+     point data: id (atom ID), cell (molecule ID), displacement from the
+                 reference (rest) position
+     cell data:  cell (molecule ID), area_strain (area / rest area - 1),
+                 max_stretch (largest l/l0 of its three tethers), broken
+                 (1 if the triangle's angle type is 0 or less)
+   ParaView opens the series directly (prefix..vtk groups the steps).
+   Rank 0 gathers the data and writes; the files are for viewing, not for
+   restarting.
+------------------------------------------------------------------------- */
+
+#include "fix_cell_vtk.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstdio>
+#include <unordered_map>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+FixCellVTK::FixCellVTK(LAMMPS *_lmp, int narg, char **arg) : Fix(_lmp, narg, arg), iref(-1)
+{
+  if (narg != 5)
+    error->all(FLERR,
+               "Illegal fix cell/vtk command: expected 'fix ID group cell/vtk N prefix', got "
+               "{} arguments after the group",
+               narg - 3);
+  nevery = utils::inumeric(FLERR, arg[3], false, lmp);
+  if (nevery <= 0) error->all(FLERR, "fix cell/vtk: N must be > 0, got {}", nevery);
+  prefix = arg[4];
+  if (!atom->molecular) error->all(FLERR, "Fix cell/vtk requires a molecular atom style");
+}
+
+int FixCellVTK::setmask()
+{
+  return END_OF_STEP;
+}
+
+void FixCellVTK::init()
+{
+  int flag, cols;
+  iref = atom->find_custom("cellref", flag, cols);
+  if (iref < 0 || flag != 1 || cols != 3)
+    error->all(FLERR,
+               "Fix cell/vtk requires the reference positions d2_cellref (3 columns) of "
+               "fix property/atom");
+  if (!force->angle)
+    error->all(FLERR,
+               "Fix cell/vtk requires an angle style (angle_style zero nocoeff) so that "
+               "LAMMPS lists the wall triangles");
+  if (!force->newton_bond) error->all(FLERR, "Fix cell/vtk requires newton_bond on");
+}
+
+void FixCellVTK::setup(int /*vflag*/)
+{
+  write();
+}
+
+void FixCellVTK::end_of_step()
+{
+  write();
+}
+
+void FixCellVTK::write()
+{
+  double **x = atom->x;
+  double **ref = atom->darray[iref];
+  tagint *tag = atom->tag;
+  tagint *molecule = atom->molecule;
+  int *mask = atom->mask;
+
+  // points: id, molecule, unwrapped position, displacement from the reference
+  std::vector<double> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || atom->nspecial[i][0] == 0) continue;
+    double xu[3];
+    domain->unmap(x[i], atom->image[i], xu);
+    mine.insert(mine.end(),
+                {(double) tag[i], (double) molecule[i], xu[0], xu[1], xu[2], xu[0] - ref[i][0],
+                 xu[1] - ref[i][1], xu[2] - ref[i][2]});
+  }
+  // triangles: three IDs, molecule, area strain, largest tether stretch, broken
+  std::vector<double> tris;
+  int **anglelist = neighbor->anglelist;
+  for (int n = 0; n < neighbor->nanglelist; n++) {
+    const int v[3] = {anglelist[n][0], anglelist[n][1], anglelist[n][2]};
+    if (!(mask[v[1]] & groupbit)) continue;
+    double e[3][3], e0[3][3], stretch = 0.0;
+    for (int k = 0; k < 3; k++) {
+      const int a = v[k], b = v[(k + 1) % 3];
+      double len = 0.0, len0 = 0.0;
+      for (int d = 0; d < 3; d++) {
+        e[k][d] = x[b][d] - x[a][d];
+        e0[k][d] = ref[b][d] - ref[a][d];
+        len += e[k][d] * e[k][d];
+        len0 += e0[k][d] * e0[k][d];
+      }
+      stretch = MAX(stretch, sqrt(len / len0));
+    }
+    auto area = [](const double *u, const double *w) {
+      const double c0 = u[1] * w[2] - u[2] * w[1], c1 = u[2] * w[0] - u[0] * w[2],
+                   c2 = u[0] * w[1] - u[1] * w[0];
+      return 0.5 * sqrt(c0 * c0 + c1 * c1 + c2 * c2);
+    };
+    const double strain = area(e[0], e[1]) / area(e0[0], e0[1]) - 1.0;
+    tris.insert(tris.end(),
+                {(double) tag[v[0]], (double) tag[v[1]], (double) tag[v[2]],
+                 (double) molecule[v[1]], strain, stretch, anglelist[n][3] <= 0 ? 1.0 : 0.0});
+  }
+
+  auto gather = [&](std::vector<double> &local) {
+    int n = local.size();
+    std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+    int total = 0;
+    if (comm->me == 0)
+      for (int p = 0; p < comm->nprocs; p++) {
+        displs[p] = total;
+        total += counts[p];
+      }
+    std::vector<double> all(comm->me == 0 ? total : 0);
+    MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
+                0, world);
+    return all;
+  };
+  std::vector<double> points = gather(mine), cells = gather(tris);
+  if (comm->me != 0) return;
+
+  const int np = points.size() / 8, nt = cells.size() / 7;
+  std::unordered_map<tagint, int> index;
+  for (int p = 0; p < np; p++) index[(tagint) points[8 * p]] = p;
+
+  const std::string file = fmt::format("{}.{}.vtk", prefix, update->ntimestep);
+  FILE *fp = fopen(file.c_str(), "w");
+  if (!fp) error->one(FLERR, "fix cell/vtk: cannot open {} for writing", file);
+  fmt::print(fp, "# vtk DataFile Version 3.0\ncellmech walls, step {}\nASCII\nDATASET POLYDATA\n",
+             update->ntimestep);
+  fmt::print(fp, "POINTS {} double\n", np);
+  for (int p = 0; p < np; p++)
+    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[8 * p + 2], points[8 * p + 3],
+               points[8 * p + 4]);
+  int nkept = 0;
+  std::string polys;
+  for (int t = 0; t < nt; t++) {
+    const double *c = &cells[7 * t];
+    auto a = index.find((tagint) c[0]), b = index.find((tagint) c[1]),
+         d = index.find((tagint) c[2]);
+    if (a == index.end() || b == index.end() || d == index.end()) continue;    // node not in group
+    polys += fmt::format("3 {} {} {}\n", a->second, b->second, d->second);
+    nkept++;
+  }
+  fmt::print(fp, "POLYGONS {} {}\n{}", nkept, 4 * nkept, polys);
+  fmt::print(fp, "POINT_DATA {}\nSCALARS id int 1\nLOOKUP_TABLE default\n", np);
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[8 * p]);
+  fmt::print(fp, "SCALARS cell int 1\nLOOKUP_TABLE default\n");
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[8 * p + 1]);
+  fmt::print(fp, "VECTORS displacement double\n");
+  for (int p = 0; p < np; p++)
+    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[8 * p + 5], points[8 * p + 6],
+               points[8 * p + 7]);
+  fmt::print(fp, "CELL_DATA {}\n", nkept);
+  const char *names[4] = {"cell", "area_strain", "max_stretch", "broken"};
+  for (int f = 0; f < 4; f++) {
+    fmt::print(fp, "SCALARS {} {} 1\nLOOKUP_TABLE default\n", names[f],
+               (f == 0 || f == 3) ? "int" : "double");
+    for (int t = 0; t < nt; t++) {
+      const double *c = &cells[7 * t];
+      if (!index.count((tagint) c[0]) || !index.count((tagint) c[1]) || !index.count((tagint) c[2]))
+        continue;
+      if (f == 0 || f == 3)
+        fmt::print(fp, "{}\n", (int) c[3 + f]);
+      else
+        fmt::print(fp, "{:.10g}\n", c[3 + f]);
+    }
+  }
+  fclose(fp);
+}
