@@ -21,7 +21,7 @@ SHORT = {
     "in.plates": ("wall3.data", dict(nsteps=300, gap=0.1)),
     "in.sheet": ("sheet.data", dict(lam="1.05")),
     "in.inflate": ("cell3.data", dict(COARSE, nsteps=2000, every=500, restart_out="short.restart")),
-    "in.compress": ("cell3.data", dict(COARSE, restart="short.restart", strain=0.01)),
+    "in.compress": ("cell3.data", dict(COARSE, restart="short.restart", strain=0.01, vtk=100)),
     "in.breathing-fluid": ("cell3.data", dict(COARSE, restart="short.restart", nsteps=200)),
 }
 

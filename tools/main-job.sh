@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: set up, then inflate a coarse stiff cell to turgor and compress it between plates to
-# 20% strain; write the force-strain data (CSV) and plots (PNG) to results/main/.
+# 20% strain; write the force-strain data (CSV) and plots (PNG) to results/main/, and the walls as
+# VTK surfaces during the compression (walls.STEP.vtk, for ParaView).
 #   coarse cell: 642 wall nodes, ~460 fluid particles (the paper's is 2562 + 3500: LEVEL=4 NFLUID=3500)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -24,7 +25,7 @@ run -in "$here/lammps-inputs/in.inflate" -log log.inflate -screen none "${model[
   -var data cell.data -var nsteps 25000 -var every 500 -var out inflate.dat -var restart_out inflated.restart
 echo "compressing ..."
 run -in "$here/lammps-inputs/in.compress" -log log.compress -screen none "${model[@]}" \
-  -var restart inflated.restart -var vplate 0.5 -var every 100 -var out compress.dat
+  -var restart inflated.restart -var vplate 0.5 -var every 100 -var out compress.dat -var vtk 2500
 /usr/bin/python3 "$here/tools/plot_main.py" "$out"
 echo "main job done: results in $out"
 ls "$out"/*.csv "$out"/*.png
