@@ -96,8 +96,8 @@ def exact(y, y0=0.0, y1=L, nu=NU):
     return G / (2.0 * nu) * (y - y0) * (y1 - y)
 
 
-def run(wall):
-    d = T.workdir("poiseuille-" + wall)
+def channel_input(wall, extra=""):
+    """LAMMPS input of the channel; `extra` goes in before the run (outputs of other tests)"""
     mirror = ""
     if wall == "mirror":
         for j in range(NW):
@@ -155,8 +155,15 @@ compute         rmax fluid reduce max v_drho
 compute         vymax fluid reduce max vy
 thermo_style    custom step time ke c_rmax c_vymax
 thermo          1000
+{extra}
 run             {NSTEPS}
 """
+    return inp
+
+
+def run(wall):
+    d = T.workdir("poiseuille-" + wall)
+    inp = channel_input(wall)
     _, log = T.lmp(inp, cwd=d, nprocs=2)
     perf = T.performance(log)
     blocks = []
