@@ -84,14 +84,42 @@ double *PairCellSPH::drho_array() const
 
 /* ---------------------------------------------------------------------- */
 
+template <class F> void PairCellSPH::for_each_fluid_pair(F &&f)
+{
+  double **x = atom->x;
+  int *type = atom->type;
+  int *ilist = list->ilist;
+  int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = ilist[ii];
+    const int itype = type[i];
+    if (!fluid[itype]) continue;
+    int *jlist = firstneigh[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int jtype = type[j];
+      if (!fluid[jtype]) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq[itype][jtype]) continue;
+      const double r = sqrt(rsq);
+      f(i, j, kernel_dwdr(r, s[itype][jtype]) / r, delx, dely, delz);
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
 void PairCellSPH::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  // density and mass changed in initial_integrate: refresh the ghosts
+  // fix cell/fluid advanced density and mass in pre_force: refresh the ghosts
   comm->forward_comm(this);
 
-  double **x = atom->x;
   double **v = atom->v;
   double **f = atom->f;
   double *rmass = atom->rmass;
@@ -161,30 +189,8 @@ void PairCellSPH::compute(int eflag, int vflag)
       interact(pair_i[k], pair_j[k], pair_wr[k], pair_del[3 * k], pair_del[3 * k + 1],
                pair_del[3 * k + 2]);
     pairs_step = -1;
-  } else {
-    const int inum = list->inum;
-    int *ilist = list->ilist;
-    int *numneigh = list->numneigh;
-    int **firstneigh = list->firstneigh;
-    for (int ii = 0; ii < inum; ii++) {
-      const int i = ilist[ii];
-      const int itype = type[i];
-      if (!fluid[itype]) continue;
-      int *jlist = firstneigh[i];
-      for (int jj = 0; jj < numneigh[i]; jj++) {
-        const int j = jlist[jj] & NEIGHMASK;
-        const int jtype = type[j];
-        if (!fluid[jtype]) continue;
-        const double delx = x[i][0] - x[j][0];
-        const double dely = x[i][1] - x[j][1];
-        const double delz = x[i][2] - x[j][2];
-        const double rsq = delx * delx + dely * dely + delz * delz;
-        if (rsq >= cutsq[itype][jtype]) continue;
-        const double r = sqrt(rsq);
-        interact(i, j, kernel_dwdr(r, s[itype][jtype]) / r, delx, dely, delz);
-      }
-    }
-  }
+  } else
+    for_each_fluid_pair(interact);
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -197,10 +203,8 @@ void PairCellSPH::compute(int eflag, int vflag)
 
 void PairCellSPH::continuity()
 {
-  double **x = atom->x;
   double **v = atom->v;
   double *rmass = atom->rmass;
-  int *type = atom->type;
   double *drho = atom->dvector[idrho];
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
@@ -214,38 +218,16 @@ void PairCellSPH::continuity()
   pair_del.clear();
   pairs_step = update->ntimestep;
 
-  const int inum = list->inum;
-  int *ilist = list->ilist;
-  int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const int itype = type[i];
-    if (!fluid[itype]) continue;
-    int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const int jtype = type[j];
-      if (!fluid[jtype]) continue;
-      const double delx = x[i][0] - x[j][0];
-      const double dely = x[i][1] - x[j][1];
-      const double delz = x[i][2] - x[j][2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsq[itype][jtype]) continue;
-      const double r = sqrt(rsq);
-      const double wr = kernel_dwdr(r, s[itype][jtype]) / r;
-      pair_i.push_back(i);
-      pair_j.push_back(j);
-      pair_wr.push_back(wr);
-      pair_del.insert(pair_del.end(), {delx, dely, delz});
-      const double vdotw =
-          ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz) *
-          wr;
-      drho[i] += rmass[j] * vdotw;
-      if (newton_pair || j < nlocal) drho[j] += rmass[i] * vdotw;
-    }
-  }
+  for_each_fluid_pair([&](int i, int j, double wr, double delx, double dely, double delz) {
+    pair_i.push_back(i);
+    pair_j.push_back(j);
+    pair_wr.push_back(wr);
+    pair_del.insert(pair_del.end(), {delx, dely, delz});
+    const double vdotw =
+        ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz) * wr;
+    drho[i] += rmass[j] * vdotw;
+    if (newton_pair || j < nlocal) drho[j] += rmass[i] * vdotw;
+  });
   if (newton_pair) comm->reverse_comm(this);
 }
 

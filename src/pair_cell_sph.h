@@ -60,6 +60,10 @@ class PairCellSPH : public Pair {
   std::vector<double> pair_wr, pair_del;
 
   void allocate();
+
+  // calls f(i, j, wr, delx, dely, delz) for every fluid-fluid pair of the neighbour list within
+  // the kernel support, with grad_i W_ij = wr * del: the one loop both passes share
+  template <class F> void for_each_fluid_pair(F &&f);
 };
 
 }    // namespace LAMMPS_NS
