@@ -175,6 +175,15 @@ inline double osmotic_mass_step(double k, double dt, double P, double Pi, double
    Triangulated closed surfaces
 ------------------------------------------------------------------------ */
 
+// Area of the triangle spanned by edge vectors u and w from one vertex.
+inline double triangle_area(const double *u, const double *w)
+{
+  const double cx = u[1] * w[2] - u[2] * w[1];
+  const double cy = u[2] * w[0] - u[0] * w[2];
+  const double cz = u[0] * w[1] - u[1] * w[0];
+  return 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+}
+
 // Signed solid angle of triangle (a, b, c) seen from the origin (van Oosterom & Strackee 1983).
 // Summed over a closed outward-oriented mesh it is 4 pi for a point inside, 0 outside.
 inline double solid_angle(const double *a, const double *b, const double *c)

@@ -23,44 +23,15 @@
 
 using namespace LAMMPS_NS;
 
-static Bond *bond_cell_tether_creator(LAMMPS *lmp)
+// LAMMPS stores the object behind a void * and uses it as its style base class: return that base
+template <class Base, class T> static void *create(void *lmp)
 {
-  return new BondCellTether(lmp);
+  return static_cast<Base *>(new T((LAMMPS *) lmp));
 }
 
-static Pair *pair_cell_lj84_creator(LAMMPS *lmp)
+template <class Base, class T> static void *create(void *lmp, int argc, char **argv)
 {
-  return new PairCellLJ84(lmp);
-}
-
-static Pair *pair_cell_sph_creator(LAMMPS *lmp)
-{
-  return new PairCellSPH(lmp);
-}
-
-static Pair *pair_cell_virtual_creator(LAMMPS *lmp)
-{
-  return new PairCellVirtual(lmp);
-}
-
-static Fix *fix_cell_fluid_creator(LAMMPS *lmp, int argc, char **argv)
-{
-  return new FixCellFluid(lmp, argc, argv);
-}
-
-static Fix *fix_cell_vtk_creator(LAMMPS *lmp, int argc, char **argv)
-{
-  return new FixCellVTK(lmp, argc, argv);
-}
-
-static Compute *compute_cell_props_creator(LAMMPS *lmp, int argc, char **argv)
-{
-  return new ComputeCellProps(lmp, argc, argv);
-}
-
-static Compute *compute_cell_shear_atom_creator(LAMMPS *lmp, int argc, char **argv)
-{
-  return new ComputeCellShearAtom(lmp, argc, argv);
+  return static_cast<Base *>(new T((LAMMPS *) lmp, argc, argv));
 }
 
 extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
@@ -85,47 +56,38 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.author = "cellmech developers";
   plugin.handle = handle;
 
-  plugin.style = "bond";
-  plugin.name = "cell/tether";
-  plugin.info = "cellmech Neo-Hookean cell wall tether";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &bond_cell_tether_creator;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.style = "pair";
-  plugin.name = "cell/lj84";
-  plugin.info = "cellmech 8-4 excluded-volume repulsion with contact damping";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_cell_lj84_creator;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "cell/sph";
-  plugin.info = "cellmech SPH protoplasm (Tait, Morris viscosity, continuity)";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_cell_sph_creator;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "cell/virtual";
-  plugin.info = "cellmech virtual particles at the wall triangles' barycentres";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_cell_virtual_creator;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.style = "fix";
-  plugin.name = "cell/fluid";
-  plugin.info = "cellmech density and osmotic mass integration of the protoplasm";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_cell_fluid_creator;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "cell/vtk";
-  plugin.info = "cellmech cell walls as VTK triangulated surfaces for ParaView";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_cell_vtk_creator;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.style = "compute";
-  plugin.name = "cell/props";
-  plugin.info = "cellmech per-cell volume, area, pressure, stretch, equatorial force, leaks";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_cell_props_creator;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "cell/shear/atom";
-  plugin.info = "cellmech per-particle protoplasm shear stress (Eqs. 24-26)";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_cell_shear_atom_creator;
-  (*register_plugin)(&plugin, lmp);
+  // pair, bond: constructed from LAMMPS alone (v1); fix, compute: with their arguments (v2)
+  struct {
+    const char *style, *name, *info;
+    lammpsplugin_factory1 *v1;
+    lammpsplugin_factory2 *v2;
+  } styles[] = {
+      {"bond", "cell/tether", "cellmech Neo-Hookean cell wall tether",
+       &create<Bond, BondCellTether>, nullptr},
+      {"pair", "cell/lj84", "cellmech 8-4 excluded-volume repulsion with contact damping",
+       &create<Pair, PairCellLJ84>, nullptr},
+      {"pair", "cell/sph", "cellmech SPH protoplasm (Tait, Morris viscosity, continuity)",
+       &create<Pair, PairCellSPH>, nullptr},
+      {"pair", "cell/virtual", "cellmech virtual particles at the wall triangles' barycentres",
+       &create<Pair, PairCellVirtual>, nullptr},
+      {"fix", "cell/fluid", "cellmech density and osmotic mass integration of the protoplasm",
+       nullptr, &create<Fix, FixCellFluid>},
+      {"fix", "cell/vtk", "cellmech cell walls as VTK triangulated surfaces for ParaView", nullptr,
+       &create<Fix, FixCellVTK>},
+      {"compute", "cell/props",
+       "cellmech per-cell volume, area, pressure, stretch, equatorial force, leaks", nullptr,
+       &create<Compute, ComputeCellProps>},
+      {"compute", "cell/shear/atom", "cellmech per-particle protoplasm shear stress (Eqs. 24-26)",
+       nullptr, &create<Compute, ComputeCellShearAtom>},
+  };
+  for (auto &st : styles) {
+    plugin.style = st.style;
+    plugin.name = st.name;
+    plugin.info = st.info;
+    if (st.v1)
+      plugin.creator.v1 = st.v1;
+    else
+      plugin.creator.v2 = st.v2;
+    (*register_plugin)(&plugin, lmp);
+  }
 }

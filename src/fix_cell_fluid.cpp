@@ -188,11 +188,8 @@ void FixCellFluid::cell_geometry()
       u[d] = x[b][d] - x[a][d];
       w[d] = x[c][d] - x[a][d];
     }
-    const double cx = u[1] * w[2] - u[2] * w[1];
-    const double cy = u[2] * w[0] - u[0] * w[2];
-    const double cz = u[0] * w[1] - u[1] * w[0];
     const tagint m = molecule[b];
-    if (m >= 1 && m <= ncells) local[m] += 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
+    if (m >= 1 && m <= ncells) local[m] += triangle_area(u, w);
   }
   for (int i = 0; i < atom->nlocal; i++)
     if ((mask[i] & groupbit) && sph->is_fluid(atom->type[i]) && molecule[i] >= 1 &&

@@ -20,6 +20,7 @@
 #include "fix_cell_vtk.h"
 
 #include "atom.h"
+#include "cell_physics.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -114,12 +115,8 @@ void FixCellVTK::write()
       }
       stretch = MAX(stretch, sqrt(len / len0));
     }
-    auto area = [](const double *u, const double *w) {
-      const double c0 = u[1] * w[2] - u[2] * w[1], c1 = u[2] * w[0] - u[0] * w[2],
-                   c2 = u[0] * w[1] - u[1] * w[0];
-      return 0.5 * sqrt(c0 * c0 + c1 * c1 + c2 * c2);
-    };
-    const double strain = area(e[0], e[1]) / area(e0[0], e0[1]) - 1.0;
+    const double strain =
+        CellPhysics::triangle_area(e[0], e[1]) / CellPhysics::triangle_area(e0[0], e0[1]) - 1.0;
     tris.insert(tris.end(),
                 {(double) tag[v[0]], (double) tag[v[1]], (double) tag[v[2]],
                  (double) molecule[v[1]], strain, stretch, anglelist[n][3] <= 0 ? 1.0 : 0.0});
