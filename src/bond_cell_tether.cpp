@@ -15,10 +15,13 @@
 #include "cell_physics.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_cell_tether_break.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -31,7 +34,7 @@ static constexpr char REF_NAME[] = "cellref";
 
 BondCellTether::BondCellTether(LAMMPS *_lmp) :
     Bond(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), lmax(0.0),
-    checked(0)
+    checked(0), breakable(0)
 {
   born_matrix_enable = 0;
 }
@@ -100,16 +103,13 @@ void BondCellTether::compute(int eflag, int vflag)
           "fix property/atom defined with 'ghost yes'?)",
           tag[i1], tag[i2], lam);
 
-    // Failure is tension only: a compressed tether never breaks. A broken bond keeps its
-    // place in the topology with type 0, as bond style quartic does, so it is skipped here
-    // and by every later neighbor list build on all ranks.
+    // Failure is tension only: a compressed tether never breaks. The bond leaves the bond arrays
+    // of the atom(s) storing it now; the rest of the topology follows in process_breaks().
     if (lamf[type] > 0.0 && lam > lamf[type]) {
       bondlist[n][2] = 0;
-      for (int m = 0; m < atom->num_bond[i1]; m++)
-        if (atom->bond_atom[i1][m] == tag[i2]) atom->bond_type[i1][m] = 0;
-      if (i2 < nlocal)
-        for (int m = 0; m < atom->num_bond[i2]; m++)
-          if (atom->bond_atom[i2][m] == tag[i1]) atom->bond_type[i2][m] = 0;
+      remove_bond(i1, tag[i2]);
+      if (!newton_bond && i2 < nlocal) remove_bond(i2, tag[i1]);
+      broken.emplace_back(MIN(tag[i1], tag[i2]), MAX(tag[i1], tag[i2]));
       continue;
     }
 
@@ -135,6 +135,66 @@ void BondCellTether::compute(int eflag, int vflag)
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
   }
   checked = 1;
+  if (breakable) process_breaks();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellTether::remove_bond(int i, tagint partner)
+{
+  int *num_bond = atom->num_bond;
+  for (int m = 0; m < num_bond[i]; m++)
+    if (atom->bond_atom[i][m] == partner) {
+      const int last = num_bond[i] - 1;
+      atom->bond_atom[i][m] = atom->bond_atom[i][last];
+      atom->bond_type[i][m] = atom->bond_type[i][last];
+      num_bond[i]--;
+      return;
+    }
+}
+
+/* ----------------------------------------------------------------------
+   Gather the tethers broken in this step on all ranks, so that every rank
+   updates its own atoms' special lists and triangles (fix CELL_TETHER_BREAK)
+   and the global bond count. One small reduction per step, and only for
+   bond types that can break.
+------------------------------------------------------------------------- */
+
+void BondCellTether::process_breaks()
+{
+  int nmine = (int) broken.size();
+  int nall = 0;
+  MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
+  if (nall == 0) return;
+
+  const int nprocs = comm->nprocs;
+  std::vector<int> counts(nprocs), displs(nprocs);
+  int nsend = 2 * nmine;
+  MPI_Allgather(&nsend, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 0, off = 0; p < nprocs; p++) {
+    displs[p] = off;
+    off += counts[p];
+  }
+  std::vector<tagint> mine, all(2 * nall);
+  for (const auto &b : broken) {
+    mine.push_back(b.first);
+    mine.push_back(b.second);
+  }
+  MPI_Allgatherv(mine.data(), nsend, MPI_LMP_TAGINT, all.data(), counts.data(), displs.data(),
+                 MPI_LMP_TAGINT, world);
+  broken.clear();
+
+  // with newton_bond off both owners of a tether saw it break
+  std::vector<std::pair<tagint, tagint>> pairs;
+  for (int k = 0; k < nall; k++) pairs.emplace_back(all[2 * k], all[2 * k + 1]);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+
+  atom->nbonds -= (bigint) pairs.size();
+  auto fix = dynamic_cast<FixCellTetherBreak *>(modify->get_fix_by_id(FixCellTetherBreak::ID));
+  if (!fix)
+    error->all(FLERR, "Bond style cell/tether: internal fix {} is missing", FixCellTetherBreak::ID);
+  fix->apply(pairs);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -205,6 +265,19 @@ void BondCellTether::coeff(int narg, char **arg)
     count++;
   }
   if (count == 0) error->all(FLERR, "Incorrect args for bond coefficients");
+  // created now, so that its count (f_cell_broken) can be used in thermo and variables at once
+  if (lamf_one > 0.0) add_break_fix();
+}
+
+/* ----------------------------------------------------------------------
+   the topology bookkeeping of broken tethers; when it is created after
+   read_restart it picks up its data from the restart file
+------------------------------------------------------------------------- */
+
+void BondCellTether::add_break_fix()
+{
+  if (!modify->get_fix_by_id(FixCellTetherBreak::ID))
+    modify->add_fix(fmt::format("{} all CELL_TETHER_BREAK", FixCellTetherBreak::ID));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -240,6 +313,23 @@ void BondCellTether::init_style()
       }
   }
   MPI_Allreduce(&lmax_local, &lmax, 1, MPI_DOUBLE, MPI_MAX, world);
+
+  // tethers that can break need the topology bookkeeping of fix CELL_TETHER_BREAK (made by
+  // bond_coeff, or here for coefficients from a restart file, before the fixes are initialised)
+  breakable = 0;
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    if (setflag[i] && lamf[i] > 0.0) breakable = 1;
+  broken.clear();
+  if (breakable) {
+    // a broken tether's nodes leave each other's 1-2 list and become an ordinary pair (or 1-3
+    // when the special list is rebuilt from the bonds): the same only with 1-3 and 1-4 weights 1
+    if (force->special_lj[2] != 1.0 || force->special_lj[3] != 1.0)
+      error->all(FLERR,
+                 "Bond style cell/tether with a critical stretch lamf requires 'special_bonds lj "
+                 "0 1 1' (got lj {} {} {}): broken tethers turn their nodes into a non-bonded pair",
+                 force->special_lj[1], force->special_lj[2], force->special_lj[3]);
+    add_break_fix();
+  }
 }
 
 /* ---------------------------------------------------------------------- */

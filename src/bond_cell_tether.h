@@ -14,6 +14,9 @@ BondStyle(cell/tether,BondCellTether);
 
 #include "bond.h"
 
+#include <utility>
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class BondCellTether : public Bond {
@@ -37,9 +40,15 @@ class BondCellTether : public Bond {
 
  protected:
   double *G, *t0, *gamma, *lamf;
-  int iref;       // index of the reference-position array d2_cellref in atom->darray
-  double lmax;    // largest rest length, for the bond-extent check of LAMMPS
-  int checked;    // reference positions checked for plausibility in this run
+  int iref;         // index of the reference-position array d2_cellref in atom->darray
+  double lmax;      // largest rest length, for the bond-extent check of LAMMPS
+  int checked;      // reference positions checked for plausibility in this run
+  int breakable;    // some bond type has a critical stretch lamf
+  std::vector<std::pair<tagint, tagint>> broken;    // tag pairs broken on this rank, this step
+
+  void remove_bond(int i, tagint partner);
+  void process_breaks();
+  void add_break_fix();
 
   void allocate();
 };

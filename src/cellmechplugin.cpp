@@ -16,6 +16,7 @@
 #include "compute_cell_props.h"
 #include "compute_cell_shear_atom.h"
 #include "fix_cell_fluid.h"
+#include "fix_cell_tether_break.h"
 #include "fix_cell_vtk.h"
 #include "pair_cell_lj84.h"
 #include "pair_cell_sph.h"
@@ -72,6 +73,8 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
        &create<Pair, PairCellVirtual>, nullptr},
       {"fix", "cell/fluid", "cellmech density and osmotic mass integration of the protoplasm",
        nullptr, &create<Fix, FixCellFluid>},
+      {"fix", "CELL_TETHER_BREAK", "cellmech bookkeeping of broken tethers (internal)", nullptr,
+       &create<Fix, FixCellTetherBreak>},
       {"fix", "cell/vtk", "cellmech cell walls as VTK triangulated surfaces for ParaView", nullptr,
        &create<Fix, FixCellVTK>},
       {"compute", "cell/props",

@@ -141,8 +141,9 @@ void ComputeCellProps::compute_array()
   std::vector<double> c;
   centres(c);
 
-  // sums per cell: volume, area, pressure, mass, nfluid, stretch sum, nbonds, feq | max stretch
-  const int NS = 8;
+  // sums per cell: volume, area, pressure, mass, nfluid, stretch sum, nbonds, feq, broken
+  // triangles | max stretch
+  const int NS = 9;
   std::vector<double> local(NS * (ncells + 1), 0.0), all(NS * (ncells + 1));
   std::vector<double> lmax_local(ncells + 1, 0.0), lmax_all(ncells + 1);
   double **x = atom->x;
@@ -153,12 +154,14 @@ void ComputeCellProps::compute_array()
     domain->minimum_image(out[0], out[1], out[2]);
   };
 
+  // The wall surface is the one through its nodes: triangles of broken tethers (type 0) count
+  // for volume and area as the others, so the volume of a burst cell stays defined.
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;
     const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
     const tagint m = molecule[b];
     if (m < 1 || m > ncells) continue;
+    if (anglelist[n][3] <= 0) local[NS * m + 8] += 1.0;
     double pa[3], pb[3], pc[3];
     rel(a, m, pa);
     rel(b, m, pb);
@@ -228,6 +231,7 @@ void ComputeCellProps::compute_array()
     row[YC] = c[3 * m + 1];
     row[ZC] = c[3 * m + 2];
     row[NLEAK] = 0.0;
+    row[NBROKEN] = s[8];
   }
   if (leaks) count_leaks(c);
 }
@@ -245,7 +249,6 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
   std::vector<double> mine;
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;
     const tagint m = molecule[anglelist[n][1]];
     if (m < 1 || m > ncells) continue;
     mine.push_back((double) m);

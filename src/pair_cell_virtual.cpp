@@ -113,6 +113,15 @@ void PairCellVirtual::compute(int eflag, int vflag)
           for (int node : {a, b, c}) eatom[node] += e / 6.0;
         }
       }
+      if (vflag_atom) {
+        // the interaction's virial (x_k - B) F_k, split as its energy: half to the fluid
+        // particle, a sixth to each node (sums to the global virial)
+        const double vv[6] = {dx * fx, dy * fy, dz * fz, dx * fy, dx * fz, dy * fz};
+        for (int q = 0; q < 6; q++) {
+          vatom[k][q] += 0.5 * vv[q];
+          for (int node : {a, b, c}) vatom[node][q] += vv[q] / 6.0;
+        }
+      }
       if (vflag_global && !vflag_fdotr) {
         virial[0] += dx * fx;
         virial[1] += dy * fy;

@@ -1,7 +1,9 @@
 // cellmech styles inside an in-process LAMMPS: forces against the formulas, bad input gives a
 // LAMMPS error that names the command and what was expected, and the plugin guard.
 #include "atom.h"
+#include "compute.h"
 #include "exceptions.h"
+#include "fix.h"
 #include "force.h"
 #include "input.h"
 #include "lammps.h"
@@ -95,13 +97,149 @@ TEST_F(Lmp, TetherDampingAlongBond)
 TEST_F(Lmp, TetherBreaksAboveCriticalStretch)
 {
   two_nodes(2.5, 2.5 * 1.05, "1 8e5 0.126 0.0 lamf 1.04");
+  // a broken tether's nodes become an ordinary pair: only consistent with 1-3/1-4 weights 1
+  EXPECT_TRUE(std::regex_search(error_of("run 0"),
+                                std::regex("cell/tether.*lamf requires 'special_bonds lj 0 1 1'")));
+  cmd("special_bonds lj 0 1 1");
   cmd("run 0");
   EXPECT_EQ(f(1, 0), 0.0);
   delete lmp;
   lmp = make();
   two_nodes(2.5, 2.5 * 1.03, "1 8e5 0.126 0.0 lamf 1.04");
-  cmd("run 0");
+  cmds({"special_bonds lj 0 1 1", "run 0"});
   EXPECT_GT(f(1, 0), 0.0);
+}
+
+// Two wall triangles 1-2-3 and 2-4-3 share the tether 2-3; the square is sheared so that 2-3 is
+// stretched 1.06x and the outer tethers about 1.03x. With lamf 1.05 only 2-3 may break, and then
+// the topology must follow: bond gone, both triangles off, 2 and 3 out of each other's special
+// list and in the neighbor list (they repel), counts kept through a restart.
+class Patch : public Lmp {
+ protected:
+  void build(const std::string &coeff)
+  {
+    const double L = 2.0, d = 0.03 * L;
+    auto at = [](double x, double y) {
+      return "create_atoms 1 single " + std::to_string(x) + " " + std::to_string(y) + " 0";
+    };
+    cmds({"units micro",
+          "atom_style molecular",
+          "atom_modify map array",
+          "boundary f f f",
+          "region box block -10 10 -10 10 -10 10",
+          "create_box 1 box bond/types 1 angle/types 1 extra/bond/per/atom 3 "
+          "extra/angle/per/atom 2 extra/special/per/atom 8",
+          "fix ref all property/atom d2_cellref 3 ghost yes",
+          "mass 1 5.0",
+          at(0, 0),
+          at(L + d, -d),
+          at(-d, L + d),
+          at(L, L),
+          "set atom 2 d2_cellref[1] 2.0",
+          "set atom 3 d2_cellref[2] 2.0",
+          "set atom 4 d2_cellref[1] 2.0",
+          "set atom 4 d2_cellref[2] 2.0",
+          "special_bonds lj 0 1 1",
+          "create_bonds single/bond 1 1 2 special no",
+          "create_bonds single/bond 1 1 3 special no",
+          "create_bonds single/bond 1 2 4 special no",
+          "create_bonds single/bond 1 3 4 special no",
+          "create_bonds single/bond 1 2 3 special no",
+          "create_bonds single/angle 1 1 2 3 special no",
+          "create_bonds single/angle 1 2 4 3 special yes",
+          "bond_style cell/tether",
+          "bond_coeff " + coeff,
+          "angle_style zero nocoeff",
+          "angle_coeff *",
+          "pair_style cell/lj84",
+          "pair_coeff 1 1 10.0 3.5",
+          "comm_modify cutoff 6.0",
+          "compute pl all pair/local dist",
+          "thermo_style custom step bonds"});
+  }
+  // is other a 1-2 neighbour of tag? (1-3 and 1-4 weigh 1: an ordinary pair)
+  bool special_has(int tag, int other)
+  {
+    const int i = lmp->atom->map(tag);
+    for (int m = 0; m < lmp->atom->nspecial[i][0]; m++)
+      if (lmp->atom->special[i][m] == other) return true;
+    return false;
+  }
+  int angle_types_on(int tag)
+  {
+    const int i = lmp->atom->map(tag);
+    int on = 0;
+    for (int m = 0; m < lmp->atom->num_angle[i]; m++) on += lmp->atom->angle_type[i][m] > 0;
+    return on;
+  }
+  // does the pair list (compute pair/local) hold the pair 2-3?
+  bool pair23_listed()
+  {
+    auto *c = lmp->modify->get_compute_by_id("pl");
+    c->compute_local();
+    return has_dist(c, diag());
+  }
+  double diag()
+  {
+    double **x = lmp->atom->x;
+    const int i = lmp->atom->map(2), j = lmp->atom->map(3);
+    return std::sqrt(std::pow(x[i][0] - x[j][0], 2) + std::pow(x[i][1] - x[j][1], 2));
+  }
+  static bool has_dist(LAMMPS_NS::Compute *c, double r)
+  {
+    for (int n = 0; n < c->size_local_rows; n++)
+      if (std::fabs(c->vector_local[n] - r) < 1e-9) return true;
+    return false;
+  }
+};
+
+TEST_F(Patch, BrokenTetherUpdatesTopology)
+{
+  build("1 8e5 0.126 0.0 lamf 1.05");
+  cmd("run 0");
+  // broken in the setup force call: bond removed, triangles off, special lists updated
+  EXPECT_EQ(lmp->atom->nbonds, 4);
+  EXPECT_FALSE(special_has(2, 3));
+  EXPECT_FALSE(special_has(3, 2));
+  EXPECT_TRUE(special_has(2, 1));
+  EXPECT_EQ(angle_types_on(2) + angle_types_on(4) + angle_types_on(1) + angle_types_on(3), 0);
+  auto *fix = lmp->modify->get_fix_by_id("cell_broken");
+  ASSERT_NE(fix, nullptr);
+  EXPECT_EQ(fix->compute_scalar(), 1.0);
+  EXPECT_EQ(fix->vector_atom[lmp->atom->map(2)], 1.0);
+  EXPECT_EQ(fix->vector_atom[lmp->atom->map(1)], 0.0);
+  // the next step re-neighbors: 2 and 3 are now an ordinary pair within the 8-4 cutoff
+  cmd("run 1");
+  EXPECT_TRUE(pair23_listed()) << "broken pair 2-3 missing from the neighbor list";
+  EXPECT_EQ(lmp->atom->nbonds, 4);
+  // the restart keeps all of it; the special list rebuilt from the bonds agrees
+  cmd("write_restart patch.restart");
+  delete lmp;
+  lmp = make();
+  cmds({"read_restart patch.restart", "fix ref all property/atom d2_cellref 3 ghost yes",
+        "special_bonds lj 0 1 1", "pair_style cell/lj84", "pair_coeff 1 1 10.0 3.5",
+        "angle_coeff *", "compute pl all pair/local dist", "run 0"});
+  EXPECT_EQ(lmp->atom->nbonds, 4);
+  EXPECT_FALSE(special_has(2, 3));
+  EXPECT_TRUE(special_has(2, 1));
+  EXPECT_EQ(angle_types_on(2) + angle_types_on(4) + angle_types_on(1) + angle_types_on(3), 0);
+  fix = lmp->modify->get_fix_by_id("cell_broken");
+  ASSERT_NE(fix, nullptr);
+  EXPECT_EQ(fix->compute_scalar(), 1.0);
+  EXPECT_EQ(fix->vector_atom[lmp->atom->map(3)], 1.0);
+  EXPECT_TRUE(pair23_listed());
+  std::remove("patch.restart");
+}
+
+TEST_F(Patch, NoBreakBelowCriticalStretch)
+{
+  build("1 8e5 0.126 0.0 lamf 1.07");
+  cmd("run 1");
+  EXPECT_EQ(lmp->atom->nbonds, 5);
+  EXPECT_TRUE(special_has(2, 3));
+  EXPECT_EQ(angle_types_on(2) + angle_types_on(4), 2);
+  EXPECT_FALSE(pair23_listed());
+  EXPECT_EQ(lmp->modify->get_fix_by_id("cell_broken")->compute_scalar(), 0.0);
 }
 
 TEST_F(Lmp, Repulsion84InLammps)

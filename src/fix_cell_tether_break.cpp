@@ -1,0 +1,202 @@
+/* ----------------------------------------------------------------------
+   cellmech: internal fix CELL_TETHER_BREAK
+
+   When a tether breaks, bond style cell/tether removes it from the bond
+   arrays of the atom that stores it and hands the tag pairs of all tethers
+   broken in this step (gathered from every rank) to apply(). Every rank
+   then brings its own atoms' topology in line:
+   - the two nodes leave each other's 1-2 special list, so that after the
+     forced re-neighboring they are an ordinary wall-wall pair and the 8-4
+     contact repels them (their 1-3 and 1-4 weights are 1, as for any pair);
+   - each triangle (angle) that has the broken tether as an edge gets type
+     0: pair cell/virtual no longer puts a virtual particle on it, so fluid
+     can pass, and fix cell/fluid takes it out of the osmotic wall area.
+     The triangle stays in the topology (restart files keep type 0), so
+     fix cell/vtk can show it as broken.
+   Removing the bond itself (rather than giving it type 0) keeps a special
+   list rebuilt from the bonds -- after read_restart or special_bonds --
+   equal to the one updated here. write_data omits type 0 angles.
+   The per-atom count of broken tethers travels with the atoms and is
+   written to restart files; the global scalar is the total.
+------------------------------------------------------------------------- */
+
+#include "fix_cell_tether_break.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+/* ---------------------------------------------------------------------- */
+
+FixCellTetherBreak::FixCellTetherBreak(LAMMPS *_lmp, int narg, char **arg) :
+    Fix(_lmp, narg, arg), nbroken(nullptr), total(0)
+{
+  if (narg != 3) error->all(FLERR, "Illegal fix CELL_TETHER_BREAK command: expected no arguments");
+  restart_global = 1;
+  restart_peratom = 1;
+  scalar_flag = 1;
+  global_freq = 1;
+  extscalar = 0;
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+  peratom_freq = 1;
+  force_reneighbor = 1;
+  next_reneighbor = -1;
+
+  FixCellTetherBreak::grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) nbroken[i] = 0.0;
+}
+
+FixCellTetherBreak::~FixCellTetherBreak()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(nbroken);
+}
+
+int FixCellTetherBreak::setmask()
+{
+  return 0;
+}
+
+double FixCellTetherBreak::compute_scalar()
+{
+  return (double) total;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pairs)
+{
+  if (pairs.empty()) return;
+  const int nlocal = atom->nlocal;
+  tagint *tag = atom->tag;
+  int **nspecial = atom->nspecial;
+  tagint **special = atom->special;
+
+  auto edge_of = [&pairs](tagint t1, tagint t2, tagint t3) {
+    for (const auto &p : pairs) {
+      const int hits = (t1 == p.first || t2 == p.first || t3 == p.first) +
+          (t1 == p.second || t2 == p.second || t3 == p.second);
+      if (hits == 2) return true;
+    }
+    return false;
+  };
+
+  for (const auto &p : pairs) {
+    for (int side = 0; side < 2; side++) {
+      const tagint me = side ? p.second : p.first;
+      const tagint other = side ? p.first : p.second;
+      const int i = atom->map(me);
+      if (i < 0 || i >= nlocal) continue;
+      nbroken[i] += 1.0;
+      // the 1-2 neighbours come first in the special list; drop the partner, shift the rest
+      const int n12 = nspecial[i][0];
+      int m = 0;
+      while (m < n12 && special[i][m] != other) m++;
+      if (m == n12) continue;    // not a 1-2 pair (e.g. a second tether between them broke)
+      for (int k = m; k < nspecial[i][2] - 1; k++) special[i][k] = special[i][k + 1];
+      nspecial[i][0]--;
+      nspecial[i][1]--;
+      nspecial[i][2]--;
+    }
+  }
+
+  // triangles in the atoms' angle arrays (for later neighbor builds and restarts) ...
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < atom->num_angle[i]; m++)
+      if (atom->angle_type[i][m] > 0 &&
+          edge_of(atom->angle_atom1[i][m], atom->angle_atom2[i][m], atom->angle_atom3[i][m]))
+        atom->angle_type[i][m] = 0;
+  // ... and in the current angle list, used until the next neighbor build (there is one only
+  // with an angle style)
+  if (force->angle) {
+    int **anglelist = neighbor->anglelist;
+    for (int n = 0; n < neighbor->nanglelist; n++)
+      if (anglelist[n][3] > 0 &&
+          edge_of(tag[anglelist[n][0]], tag[anglelist[n][1]], tag[anglelist[n][2]]))
+        anglelist[n][3] = 0;
+  }
+
+  total += (bigint) pairs.size();
+  // the pair is no longer excluded: rebuild the neighbor lists before the next force call
+  next_reneighbor = update->ntimestep + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTetherBreak::grow_arrays(int nmax)
+{
+  memory->grow(nbroken, nmax, "cell_tether_break:nbroken");
+  vector_atom = nbroken;
+}
+
+void FixCellTetherBreak::copy_arrays(int i, int j, int /*delflag*/)
+{
+  nbroken[j] = nbroken[i];
+}
+
+int FixCellTetherBreak::pack_exchange(int i, double *buf)
+{
+  buf[0] = nbroken[i];
+  return 1;
+}
+
+int FixCellTetherBreak::unpack_exchange(int nlocal, double *buf)
+{
+  nbroken[nlocal] = buf[0];
+  return 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTetherBreak::write_restart(FILE *fp)
+{
+  if (comm->me == 0) {
+    const int size = sizeof(bigint);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(&total, sizeof(bigint), 1, fp);
+  }
+}
+
+void FixCellTetherBreak::restart(char *buf)
+{
+  memcpy(&total, buf, sizeof(bigint));
+}
+
+int FixCellTetherBreak::pack_restart(int i, double *buf)
+{
+  buf[0] = 2;    // values for this atom, including this count (LAMMPS convention)
+  buf[1] = nbroken[i];
+  return 2;
+}
+
+void FixCellTetherBreak::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  nbroken[nlocal] = extra[nlocal][m + 1];
+}
+
+int FixCellTetherBreak::maxsize_restart()
+{
+  return 2;
+}
+
+int FixCellTetherBreak::size_restart(int /*nlocal*/)
+{
+  return 2;
+}

@@ -1,0 +1,54 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellmech: internal fix CELL_TETHER_BREAK, the bookkeeping of broken
+   wall tethers. Created by bond style cell/tether when a bond type has a
+   critical stretch (bond_coeff ... lamf v), with the ID cell_broken.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(CELL_TETHER_BREAK,FixCellTetherBreak);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_CELL_TETHER_BREAK_H
+#define LMP_FIX_CELL_TETHER_BREAK_H
+
+#include "fix.h"
+
+#include <utility>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixCellTetherBreak : public Fix {
+ public:
+  static constexpr const char *ID = "cell_broken";
+
+  FixCellTetherBreak(class LAMMPS *, int, char **);
+  ~FixCellTetherBreak() override;
+  int setmask() override;
+  double compute_scalar() override;
+
+  // every rank calls this with the same list: the tag pairs of the tethers broken this step
+  void apply(const std::vector<std::pair<tagint, tagint>> &pairs);
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int maxsize_restart() override;
+  int size_restart(int) override;
+
+ protected:
+  double *nbroken;    // per atom: broken tethers that ended at this node
+  bigint total;       // broken tethers in the whole system since the fix was created
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
