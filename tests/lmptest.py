@@ -52,6 +52,20 @@ def lmp(input_file, cwd, nprocs=1, variables=None, check=True, log="log.lammps")
     return p.returncode, text
 
 
+def continue_cell(restart):
+    """Input lines that continue a cell run from a restart file: restart files keep neither the
+    per-atom fields' definition nor pair_style hybrid's coefficients, so both come again."""
+    return f"""
+units           micro
+read_restart    {restart}
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+group           wall type 1
+group           fluid type 2
+include         {INPUTS}/cell-model.lmp
+fix             integrate all nve
+"""
+
+
 def load(path):
     """Numeric table of a fix ave/time or print file (comment lines '#')."""
     return np.loadtxt(path, comments="#", ndmin=2)

@@ -38,16 +38,8 @@ def main():
     full = START.format(inputs=T.INPUTS) + "run 200\nwrite_restart half.restart\nrun 200\n" + \
         DUMP.format(name="full.dump")
     T.lmp(full, cwd=d, nprocs=2, variables=common, log="log.full")
-    cont = f"""
-variable        Lp index 1.0
-units           micro
-read_restart    half.restart
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
-group           wall type 1
-group           fluid type 2
-include         {T.INPUTS}/cell-model.lmp
-fix             integrate all nve
-fix             osmosis fluid cell/fluid Pi -364.0 Lp ${{Lp}}
+    cont = "variable        Lp index 1.0\n" + T.continue_cell("half.restart") + """
+fix             osmosis fluid cell/fluid Pi -364.0 Lp ${Lp}
 timestep        0.001
 run             200
 """ + DUMP.format(name="cont.dump")

@@ -55,15 +55,7 @@ def main():
                 f"{firsts[1]:.0f} vs {firsts[2]:.0f}")
 
     # a burst without plates: lamf below the turgid cell's largest stretch (1.018) starts a crack
-    burst = f"""
-variable        lamf index 1.016
-units           micro
-read_restart    turgid.restart
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
-group           wall type 1
-group           fluid type 2
-include         {T.INPUTS}/cell-model.lmp
-fix             integrate all nve
+    burst = "variable        lamf index 1.016\n" + T.continue_cell("{restart}") + """
 fix             osmosis fluid cell/fluid Pi -364.0 Lp 1.0e-9
 compute         props all cell/props leaks yes
 thermo_style    custom step f_cell_broken c_props[1][13] c_props[1][9] bonds
@@ -74,10 +66,10 @@ change_box      all boundary m m m
 """
     dump = ("write_dump all custom {} id x y z vx vy vz d_rho f_cell_broken "
             "modify sort id format float %.17g\n")
-    T.lmp(burst + "run 600\nwrite_restart burst.restart\nrun 600\n" + dump.format("full.dump") +
+    T.lmp(burst.format(restart="turgid.restart") + "run 600\nwrite_restart burst.restart\nrun 600\n" + dump.format("full.dump") +
           'print "BROKEN $(f_cell_broken) BONDS $(bonds)"\n', cwd=d, nprocs=2,
           variables=model, log="log.burst-full")
-    cont = burst.replace("read_restart    turgid.restart", "read_restart    burst.restart")
+    cont = burst.format(restart="burst.restart")
     _, log = T.lmp(cont + "run 600\n" + dump.format("cont.dump") +
                    'print "BROKEN $(f_cell_broken) BONDS $(bonds)"\n', cwd=d, nprocs=2,
                    variables=model, log="log.burst-cont")
