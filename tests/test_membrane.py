@@ -1,0 +1,228 @@
+"""Issue 5, case 5: the membrane compression reference (tools/membrane.py) on its own limits.
+
+The reference is an axisymmetric Neo-Hookean membrane of fixed contents squeezed between two
+frictionless plates, solved by collocation with a slack (tension-field) centre of the contact disc
+where the classical solution would compress it (docs/membrane.rst). Stiff cell: G t0 = 8e5 kPa *
+0.126 um, R0 = 30 um (cellgen's unstressed radius). Checked, each error printed:
+ (a) first contact: as eps -> 0 the solution tends to the Young-Laplace sphere (r_eq, p);
+ (b) the enclosed volume, integrated from the shape, holds V0 (K = None) or follows
+     V0 (1 - (p - P)/K);
+ (c) the plate force F = p pi a^2 (the plate carries p over the whole contact disc, slack centre
+     included) equals the force from virtual work, F = (dU - p dV)/dDeltaX with U the wall's
+     strain energy: this holds only if every part of the solution, the free boundary of the slack
+     disc included, is an equilibrium (Richardson-extrapolated central differences);
+ (d) vertical balance of the upper half at the equator: F = p pi r_eq^2 - 2 pi r_eq T1(eq);
+ (e) convergence of F at eps = 0.1 and 0.2 with the collocation tolerance;
+ (f) F(0) = 0, F increasing, and the small-strain limit of a tensioned membrane pulled off a
+     flat disc: eps = (a/R)^2 (ln(R/a) + C), i.e. d(eps R^2/a^2)/d ln(R/a) -> 1;
+ (g) no compressive tension anywhere (admissible tension field), and where the slack centre starts.
+Tolerances: the solver's (1e-7 residual) times the quantities' condition, stated at each check.
+"""
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
+sys.path.insert(0, HERE)
+import lmptest as T  # noqa: E402  (check/finish helpers only: no LAMMPS run here)
+import membrane as M  # noqa: E402
+
+G_T0, R0 = 8.0e5 * 0.126, 30.0
+K_FLUID = 7.0e4          # rho0 c^2 of the model's fluid (kPa)
+VW_H = 1e-3              # strain step of the virtual-work differences (c)
+
+
+def volume_by_quadrature(curve):
+    """Enclosed volume from the converged shape: 2 * integral pi r^2 dz over the free meridian."""
+    from scipy.integrate import simpson
+    eps, slack, sol = curve.state
+    thc = sol.p[1]
+    tau = np.linspace(0.0, 1.0, 20001)
+    l2, l1, psi = sol.sol(tau)[2:5]
+    th = thc + (M.HALF_PI - thc) * tau
+    r = np.sin(th) * l2
+    return 2.0 * simpson(math.pi * r * r * l1 * np.sin(psi), x=th) * R0 ** 3
+
+
+def main():
+    t_start = time.process_time()
+    strains = [0.0, 0.05, 0.1, 0.15, 0.2]
+    print(f"stiff cell: G t0 = {G_T0:g} nN/um, R0 = {R0:g} um")
+
+    # ---- (a) first contact -> Young-Laplace
+    print("\n(a) eps -> 0: r_eq and p against the Young-Laplace sphere")
+    for P in (364.0, 3.0):
+        lam = M.young_laplace_stretch(P * R0 / G_T0)
+        R_yl = lam * R0
+        law = P * R_yl / 2.0 / (-G_T0 * math.expm1(-6.0 * math.log(lam))) - 1.0
+        for e in (1e-6, 1e-5):
+            d = M.compress_curve(G_T0, R0, P, [e])[0]
+            er, ep = d["r_eq"] / R_yl - 1.0, d["p"] / P - 1.0
+            print(f"  P {P:5g}  eps {e:.0e}  R_YL {R_yl:.6f}  r_eq {d['r_eq']:.6f} ({er:+.2e})  "
+                  f"p {d['p']:.6f} ({ep:+.2e})  law residual {law:.1e}")
+        # the perturbation of a point-like contact scales with eps (a^2 ~ eps R^2 / ln)
+        # the law's residual is round-off: lam is stored to 1e-16 absolute, and the tension
+        # 1 - lam^-6 ~ 6 (lam - 1) amplifies that by 1 / (lam - 1) (1.3e4 at 3 kPa)
+        T.check(f"P {P:g}: eps = 1e-5 is the Young-Laplace sphere within 10 eps",
+                abs(er) < 1e-4 and abs(ep) < 1e-4
+                and abs(law) < 10 * sys.float_info.epsilon / (lam - 1.0),
+                f"r_eq {er:+.1e}, p {ep:+.1e}, law {law:.1e}")
+
+    # ---- curves of the turgor series, with the checks along them; each continuation also
+    # passes the strains e +- h, e +- h/2 that the virtual-work check (c) differentiates over
+    vw_cases = {364.0: (0.05, 0.15), 300.0: (), 30.0: (0.1,), 3.0: (0.1,)}
+    curves = {}
+    for P, vw in vw_cases.items():
+        c = M.Curve(G_T0, R0, P)
+        todo = sorted(set(strains) | {e + s * VW_H for e in vw for s in (-1, -0.5, 0.5, 1)})
+        rows = {}
+        for e in todo:
+            d = c.zero_load() if e == 0.0 else c.dimensional(e, c.advance(e))
+            if e > 0.0:
+                d["V_quad"] = volume_by_quadrature(c)
+            rows[e] = d
+        curves[P] = (c, rows)
+
+    print("\nturgor series (stiff cell), F in nN (= 1e-3 uN)")
+    print(f"{'P kPa':>6s} {'eps':>5s} {'F nN':>11s} {'p kPa':>9s} {'a um':>8s} {'a_slack':>8s} "
+          f"{'r_eq um':>9s} {'(b) V err':>9s} {'(d) F_eq err':>12s} {'min T':>9s}")
+    for P, (c, rows) in curves.items():
+        rows = [rows[e] for e in strains]
+        for d in rows:
+            if d["eps"] == 0.0:
+                continue
+            ev = d["V_quad"] / d["V_target"] - 1.0
+            ed = d["F_eq"] / d["F"] - 1.0
+            mt = min(d["min_T_disc"], d["min_T_free"])
+            print(f"{P:6g} {d['eps']:5.2f} {d['F']:11.5g} {d['p']:9.3f} {d['a']:8.4f} "
+                  f"{d['a_slack']:8.4f} {d['r_eq']:9.4f} {ev:+9.1e} {ed:+12.1e} {mt:9.2e}")
+            # collocation residual 1e-7 on O(1) states: the volume integral and the equatorial
+            # balance inherit errors of that order
+            T.check(f"(b) P {P:g} eps {d['eps']:.2f}: volume conserved", abs(ev) < 1e-6,
+                    f"{ev:+.1e}")
+            T.check(f"(d) P {P:g} eps {d['eps']:.2f}: equatorial balance", abs(ed) < 1e-6,
+                    f"{ed:+.1e}")
+            # (g) tensions >= 0 up to the tolerance times the tension scale G t0
+            T.check(f"(g) P {P:g} eps {d['eps']:.2f}: no compressive tension",
+                    mt > -1e-6 * G_T0, f"min {mt:.1e} nN/um")
+        F = [d["F"] for d in rows]
+        T.check(f"(f) P {P:g}: F(0) = 0 and F increasing", F[0] == 0.0 and np.all(np.diff(F) > 0),
+                " ".join(f"{f:.4g}" for f in F))
+        print(f"(g) P {P:g} kPa: slack centre from eps = {c.eps_slack:.5f}" if c.eps_slack else
+              f"(g) P {P:g} kPa: no slack centre up to eps 0.2")
+
+    # slack onset falls with turgor: the prestretch that the flattening must undo shrinks
+    onsets = [curves[P][0].eps_slack for P in (364.0, 300.0, 30.0, 3.0)]
+    T.check("(g) slack onset decreases with turgor", all(o is not None for o in onsets)
+            and np.all(np.diff(onsets) < 0), " ".join(f"{o:.5f}" for o in onsets))
+
+    # the tension field relaxes the energy: at the same strain and volume the slack-centre state
+    # stores less strain energy than the classical one, whose pole carries compression
+    print("\n(g) strain energy: slack centre against the classical (compressed pole) branch, 364 kPa")
+    cc = M.Curve(G_T0, R0, 364.0, tension_field=False)
+    for e in (0.1, 0.15):
+        dc = cc.dimensional(e, cc.advance(e))
+        ds = curves[364.0][1][e]
+        du = ds["U"] / dc["U"] - 1.0
+        print(f"  eps {e:.2f}: classical pole stretch {dc['lam_inner']:.5f}, pole tension "
+              f"{dc['min_T_disc']:.4g} nN/um, U {dc['U']:.8g}, F {dc['F']:.6g};  slack U "
+              f"{ds['U']:.8g} ({du:+.2e}), F {ds['F']:.6g} ({ds['F'] / dc['F'] - 1:+.2%})")
+        # energies are converged to ~1e-9 relative (e): the difference is far above that
+        T.check(f"(g) eps {e:.2f}: slack centre has the lower energy", du < -1e-6, f"{du:+.1e}")
+
+    # ---- (b) compressible contents
+    print("\n(b) contents of bulk modulus K = 7e4 kPa: V against V0 (1 - (p - P)/K)")
+    ck = M.Curve(G_T0, R0, 364.0, bulk_modulus=K_FLUID)
+    V0 = 4.0 / 3.0 * math.pi * ck.R_infl ** 3
+    krows = {}
+    for e in sorted({0.1, 0.2} | {0.15 + s * VW_H for s in (-1, -0.5, 0, 0.5, 1)}):
+        d = ck.dimensional(e, ck.advance(e))
+        krows[e] = d
+        if e not in (0.1, 0.2):
+            continue
+        Vq = volume_by_quadrature(ck)
+        law = V0 * (1.0 - (d["p"] - 364.0) / K_FLUID)
+        err = Vq / law - 1.0
+        F_inc = curves[364.0][1][e]["F"]
+        print(f"  eps {e:.1f}  p {d['p']:.3f}  V {Vq:.6g}  law {law:.6g} ({err:+.1e})  "
+              f"V/V0 - 1 {Vq / V0 - 1:+.2e}  F {d['F']:.5g} (incompressible {F_inc:.5g})")
+        T.check(f"(b) K: eps {e:.1f} volume follows the bulk modulus", abs(err) < 1e-6, f"{err:+.1e}")
+        T.check(f"(b) K: eps {e:.1f} compressible contents are softer", d["F"] < F_inc,
+                f"{d['F'] / F_inc - 1:+.2%}")
+
+    # ---- (c) virtual work: F = (dU - p dV) / dDeltaX
+    print("\n(c) F = p pi a^2 against virtual work (dU - p dV)/dDeltaX, Richardson on h, h/2")
+    cases = [(P, None, e, curves[P][1]) for P, vw in vw_cases.items() for e in vw]
+    for P, K, e, rows in cases + [(364.0, K_FLUID, 0.15, krows)]:
+        est = []
+        for h in (VW_H, 0.5 * VW_H):
+            lo, hi = rows[e - h], rows[e + h]
+            dX = 2.0 * lo["R_inflated"] * 2.0 * h
+            est.append((hi["U"] - lo["U"] - rows[e]["p"] * (hi["V"] - lo["V"])) / dX)
+        F = rows[e]["F"]
+        Fw = (4.0 * est[1] - est[0]) / 3.0
+        err = Fw / F - 1.0
+        print(f"  P {P:5g} K {K}  eps {e:.2f} ({'slack' if rows[e]['slack'] else 'taut'})  "
+              f"p pi a^2 {F:.8g}  work {Fw:.8g} ({err:+.1e}; central h, h/2: "
+              f"{est[0] / F - 1:+.1e}, {est[1] / F - 1:+.1e})")
+        # the central differences themselves shrink 4x per halving (O(h^2)); after Richardson
+        # what is left is the energy's quadrature and solver error over dDeltaX ~ 1e-3 R
+        T.check(f"(c) P {P:g} K {K} eps {e:.2f}: virtual work", abs(err) < 2e-5, f"{err:+.1e}")
+
+    # ---- (e) convergence with the collocation tolerance
+    print("\n(e) F against the collocation tolerance: each state re-solved from a coarse guess")
+    for P in (364.0, 3.0):
+        c = M.Curve(G_T0, R0, P, tol=1e-5)
+        for e in (0.1, 0.2):
+            c.advance(e)
+            prob = c.problem(e, c.state[1])
+            sol0 = c.state[2]
+            tau = np.linspace(0.0, 1.0, 101)
+            res = {}
+            for tol in (1e-5, 1e-6, 1e-7, 1e-9):
+                s = M.solve(prob, tau, sol0.sol(tau), sol0.p, tol=tol)
+                res[tol] = (M.describe(prob, s)["F"], len(s.x))
+            ref = res[1e-9][0]
+            errs = {tol: res[tol][0] / ref - 1.0 for tol in res}
+            print(f"  P {P:5g} eps {e:.1f}: F(tol 1e-9) {ref * G_T0 * R0:.10g} nN; " + ", ".join(
+                f"tol {tol:.0e}: {errs[tol]:+.1e} ({res[tol][1]} nodes)" for tol in (1e-5, 1e-6, 1e-7)))
+            T.check(f"(e) P {P:g} eps {e:.1f}: F within 10 tol of the tol-1e-9 result",
+                    all(abs(errs[tol]) < 10 * tol for tol in (1e-5, 1e-6, 1e-7)),
+                    f"{max(abs(errs[tol]) for tol in (1e-5, 1e-6, 1e-7)):.1e}")
+    # the classical branch's pole condition sits at POLE * theta_c
+    keep = M.POLE
+    f = []
+    for pole in (1e-3, 1e-4):
+        M.POLE = pole
+        f.append(M.compress_curve(G_T0, R0, 364.0, [0.05])[0]["F"])
+    M.POLE = keep
+    err = f[0] / f[1] - 1.0
+    print(f"  classical branch, P 364 eps 0.05: F with pole offset 1e-3 / 1e-4 theta_c: {err:+.1e}")
+    T.check("(e) pole offset negligible", abs(err) < 1e-6, f"{err:+.1e}")
+
+    # ---- (f) small-strain limit: outside a contact disc of radius a the wall is a membrane of
+    # tension T0 = P R / 2 pulled by F = p pi a^2, slope F/(2 pi T0 r): the pole sinks by
+    # (F/(2 pi T0)) ln(R/a) + O(a^2), so eps R^2/a^2 = ln(R/a) + C: unit slope in ln(R/a)
+    print("\n(f) small strain: eps (R/a)^2 against ln(R/a)")
+    for P in (364.0, 30.0):
+        rows = M.compress_curve(G_T0, R0, P, [1e-6, 1e-5, 1e-4])
+        R = rows[0]["R_inflated"]
+        q = [(r["eps"] * (R / r["a"]) ** 2, math.log(R / r["a"])) for r in rows]
+        slopes = [(q[i + 1][0] - q[i][0]) / (q[i + 1][1] - q[i][1]) for i in range(2)]
+        print(f"  P {P:5g}: eps (R/a)^2 - ln(R/a) = " + ", ".join(f"{a - b:.5f}" for a, b in q)
+              + f";  slopes {slopes[1]:.5f} (1e-4..1e-5), {slopes[0]:.5f} (1e-5..1e-6)")
+        T.check(f"(f) P {P:g}: log slope -> 1", abs(slopes[0] - 1.0) < 1e-2
+                and abs(slopes[0] - 1.0) < abs(slopes[1] - 1.0), f"{slopes[0]:.5f}")
+
+    cpu = time.process_time() - t_start
+    print(f"\nCPU time {cpu:.1f} s")
+    T.check("runs in under 60 s of CPU", cpu < 60.0, f"{cpu:.1f} s")
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()
