@@ -24,8 +24,10 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_cell_tether_break.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "pair.h"
 #include "pair_cell_sph.h"
@@ -142,7 +144,7 @@ void ComputeCellProps::compute_array()
   centres(c);
 
   // sums per cell: volume, area, pressure, mass, nfluid, stretch sum, nbonds, feq, broken
-  // triangles | max stretch
+  // tethers | max stretch
   const int NS = 9;
   std::vector<double> local(NS * (ncells + 1), 0.0), all(NS * (ncells + 1));
   std::vector<double> lmax_local(ncells + 1, 0.0), lmax_all(ncells + 1);
@@ -154,14 +156,14 @@ void ComputeCellProps::compute_array()
     domain->minimum_image(out[0], out[1], out[2]);
   };
 
-  // The wall surface is the one through its nodes: triangles of broken tethers (type 0) count
-  // for volume and area as the others, so the volume of a burst cell stays defined.
+  // A broken tether takes its two triangles out of the wall (bond style cell/tether): after a
+  // failure the volume is that of the cones from the centre over the remaining triangles.
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
+    if (anglelist[n][3] <= 0) continue;
     const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
     const tagint m = molecule[b];
     if (m < 1 || m > ncells) continue;
-    if (anglelist[n][3] <= 0) local[NS * m + 8] += 1.0;
     double pa[3], pb[3], pc[3];
     rel(a, m, pa);
     rel(b, m, pb);
@@ -173,6 +175,14 @@ void ComputeCellProps::compute_array()
     local[NS * m + 0] += (pa[0] * cr[0] + pa[1] * cr[1] + pa[2] * cr[2]) / 6.0;
     local[NS * m + 1] += 0.5 * sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
   }
+
+  // broken tethers: each counted at both of its nodes by fix CELL_TETHER_BREAK
+  auto *broken = modify->get_fix_by_id(FixCellTetherBreak::ID);
+  if (broken)
+    for (int i = 0; i < atom->nlocal; i++) {
+      const tagint m = molecule[i];
+      if (m >= 1 && m <= ncells) local[NS * m + 8] += 0.5 * broken->vector_atom[i];
+    }
 
   if (sph) {
     const double *rho = sph->rho_array();
@@ -249,6 +259,7 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
   std::vector<double> mine;
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
+    if (anglelist[n][3] <= 0) continue;
     const tagint m = molecule[anglelist[n][1]];
     if (m < 1 || m > ncells) continue;
     mine.push_back((double) m);

@@ -21,7 +21,22 @@ namespace LAMMPS_NS {
 
 class ComputeCellProps : public Compute {
  public:
-  enum { VOLUME, AREA, PRESSURE, MASS, NFLUID, LAM_MEAN, LAM_MAX, FEQ, NLEAK, XC, YC, ZC, NBROKEN, NCOL };
+  enum {
+    VOLUME,
+    AREA,
+    PRESSURE,
+    MASS,
+    NFLUID,
+    LAM_MEAN,
+    LAM_MAX,
+    FEQ,
+    NLEAK,
+    XC,
+    YC,
+    ZC,
+    NBROKEN,
+    NCOL
+  };
 
   ComputeCellProps(class LAMMPS *, int, char **);
   ~ComputeCellProps() override;

@@ -8,14 +8,16 @@
    - the two nodes leave each other's 1-2 special list, so that after the
      forced re-neighboring they are an ordinary wall-wall pair and the 8-4
      contact repels them (their 1-3 and 1-4 weights are 1, as for any pair);
-   - each triangle (angle) that has the broken tether as an edge gets type
-     0: pair cell/virtual no longer puts a virtual particle on it, so fluid
-     can pass, and fix cell/fluid takes it out of the osmotic wall area.
-     The triangle stays in the topology (restart files keep type 0), so
-     fix cell/vtk can show it as broken.
-   Removing the bond itself (rather than giving it type 0) keeps a special
-   list rebuilt from the bonds -- after read_restart or special_bonds --
-   equal to the one updated here. write_data omits type 0 angles.
+   - each triangle (angle) that has the broken tether as an edge leaves
+     the topology: pair cell/virtual no longer puts a virtual particle on
+     it, so fluid can pass, and fix cell/fluid takes it out of the osmotic
+     wall area. Deleting it (rather than giving it type 0) matters: LAMMPS
+     lists angles of type 0 until the next run starts and then drops them,
+     and would stop with "Angle atoms missing" when the nodes of a torn
+     triangle drift apart farther than the ghost cutoff.
+   Removing the bond itself too keeps a special list rebuilt from the bonds
+   -- after read_restart or special_bonds -- equal to the one updated here,
+   and write_data writes the torn wall as it is.
    The per-atom count of broken tethers travels with the atoms and is
    written to restart files; the global scalar is the total.
 ------------------------------------------------------------------------- */
@@ -114,14 +116,31 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
     }
   }
 
-  // triangles in the atoms' angle arrays (for later neighbor builds and restarts) ...
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < atom->num_angle[i]; m++)
-      if (atom->angle_type[i][m] > 0 &&
-          edge_of(atom->angle_atom1[i][m], atom->angle_atom2[i][m], atom->angle_atom3[i][m]))
-        atom->angle_type[i][m] = 0;
-  // ... and in the current angle list, used until the next neighbor build (there is one only
-  // with an angle style)
+  // Triangles with a broken edge leave the angle arrays (for later neighbor builds, restarts and
+  // data files) and the global angle count ...
+  bigint removed_local = 0, removed = 0;
+  const int newton_bond = force->newton_bond;
+  for (int i = 0; i < nlocal; i++) {
+    int m = 0;
+    while (m < atom->num_angle[i]) {
+      if (!edge_of(atom->angle_atom1[i][m], atom->angle_atom2[i][m], atom->angle_atom3[i][m])) {
+        m++;
+        continue;
+      }
+      // with newton_bond off all three atoms store it; count it once, at its central atom
+      if (newton_bond || tag[i] == atom->angle_atom2[i][m]) removed_local++;
+      const int last = atom->num_angle[i] - 1;
+      atom->angle_type[i][m] = atom->angle_type[i][last];
+      atom->angle_atom1[i][m] = atom->angle_atom1[i][last];
+      atom->angle_atom2[i][m] = atom->angle_atom2[i][last];
+      atom->angle_atom3[i][m] = atom->angle_atom3[i][last];
+      atom->num_angle[i]--;
+    }
+  }
+  MPI_Allreduce(&removed_local, &removed, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  atom->nangles -= removed;
+  // ... and are switched off in the current angle list, used until the next neighbor build (there
+  // is one only with an angle style)
   if (force->angle) {
     int **anglelist = neighbor->anglelist;
     for (int n = 0; n < neighbor->nanglelist; n++)

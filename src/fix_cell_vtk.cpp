@@ -8,10 +8,11 @@
    points (unwrapped coordinates) and the wall triangles (the angles of the
    topology) as polygons:
      point data: id (atom ID), cell (molecule ID), displacement from the
-                 reference (rest) position
+                 reference (rest) position, broken (tethers the node has
+                 lost, bond style cell/tether with lamf)
      cell data:  cell (molecule ID), area_strain (area / rest area - 1),
-                 max_stretch (largest l/l0 of its three tethers), broken
-                 (1 if the triangle's angle type is 0 or less)
+                 max_stretch (largest l/l0 of its three tethers)
+   A broken tether takes its triangles out of the wall: a crack is a hole.
    ParaView opens the series directly (prefix..vtk groups the steps).
    Rank 0 gathers the data and writes; the files are for viewing, not for
    restarting.
@@ -24,7 +25,9 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_cell_tether_break.h"
 #include "force.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -87,7 +90,8 @@ void FixCellVTK::write()
   tagint *molecule = atom->molecule;
   int *mask = atom->mask;
 
-  // points: id, molecule, unwrapped position, displacement from the reference
+  // points: id, molecule, unwrapped position, displacement from the reference, broken tethers
+  auto *broken = modify->get_fix_by_id(FixCellTetherBreak::ID);
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || atom->nspecial[i][0] == 0) continue;
@@ -95,9 +99,10 @@ void FixCellVTK::write()
     domain->unmap(x[i], atom->image[i], xu);
     mine.insert(mine.end(),
                 {(double) tag[i], (double) molecule[i], xu[0], xu[1], xu[2], xu[0] - ref[i][0],
-                 xu[1] - ref[i][1], xu[2] - ref[i][2]});
+                 xu[1] - ref[i][1], xu[2] - ref[i][2], broken ? broken->vector_atom[i] : 0.0});
   }
-  // triangles: three IDs, molecule, area strain, largest tether stretch, broken
+  // triangles: three IDs, molecule, area strain, largest tether stretch (a broken tether has
+  // taken its triangles out of the topology: the crack is a hole in the surface)
   std::vector<double> tris;
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
@@ -119,7 +124,7 @@ void FixCellVTK::write()
         CellPhysics::triangle_area(e[0], e[1]) / CellPhysics::triangle_area(e0[0], e0[1]) - 1.0;
     tris.insert(tris.end(),
                 {(double) tag[v[0]], (double) tag[v[1]], (double) tag[v[2]],
-                 (double) molecule[v[1]], strain, stretch, anglelist[n][3] <= 0 ? 1.0 : 0.0});
+                 (double) molecule[v[1]], strain, stretch});
   }
 
   auto gather = [&](std::vector<double> &local) {
@@ -140,9 +145,9 @@ void FixCellVTK::write()
   std::vector<double> points = gather(mine), cells = gather(tris);
   if (comm->me != 0) return;
 
-  const int np = points.size() / 8, nt = cells.size() / 7;
+  const int np = points.size() / 9, nt = cells.size() / 6;
   std::unordered_map<tagint, int> index;
-  for (int p = 0; p < np; p++) index[(tagint) points[8 * p]] = p;
+  for (int p = 0; p < np; p++) index[(tagint) points[9 * p]] = p;
 
   const std::string file = fmt::format("{}.{}.vtk", prefix, update->ntimestep);
   FILE *fp = fopen(file.c_str(), "w");
@@ -151,12 +156,12 @@ void FixCellVTK::write()
              update->ntimestep);
   fmt::print(fp, "POINTS {} double\n", np);
   for (int p = 0; p < np; p++)
-    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[8 * p + 2], points[8 * p + 3],
-               points[8 * p + 4]);
+    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[9 * p + 2], points[9 * p + 3],
+               points[9 * p + 4]);
   int nkept = 0;
   std::string polys;
   for (int t = 0; t < nt; t++) {
-    const double *c = &cells[7 * t];
+    const double *c = &cells[6 * t];
     auto a = index.find((tagint) c[0]), b = index.find((tagint) c[1]),
          d = index.find((tagint) c[2]);
     if (a == index.end() || b == index.end() || d == index.end()) continue;    // node not in group
@@ -165,24 +170,25 @@ void FixCellVTK::write()
   }
   fmt::print(fp, "POLYGONS {} {}\n{}", nkept, 4 * nkept, polys);
   fmt::print(fp, "POINT_DATA {}\nSCALARS id int 1\nLOOKUP_TABLE default\n", np);
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[8 * p]);
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[9 * p]);
   fmt::print(fp, "SCALARS cell int 1\nLOOKUP_TABLE default\n");
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[8 * p + 1]);
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[9 * p + 1]);
   fmt::print(fp, "VECTORS displacement double\n");
   for (int p = 0; p < np; p++)
-    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[8 * p + 5], points[8 * p + 6],
-               points[8 * p + 7]);
+    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[9 * p + 5], points[9 * p + 6],
+               points[9 * p + 7]);
+  fmt::print(fp, "SCALARS broken int 1\nLOOKUP_TABLE default\n");
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (int) points[9 * p + 8]);
   fmt::print(fp, "CELL_DATA {}\n", nkept);
-  const char *names[4] = {"cell", "area_strain", "max_stretch", "broken"};
-  for (int f = 0; f < 4; f++) {
-    fmt::print(fp, "SCALARS {} {} 1\nLOOKUP_TABLE default\n", names[f],
-               (f == 0 || f == 3) ? "int" : "double");
+  const char *names[3] = {"cell", "area_strain", "max_stretch"};
+  for (int f = 0; f < 3; f++) {
+    fmt::print(fp, "SCALARS {} {} 1\nLOOKUP_TABLE default\n", names[f], f == 0 ? "int" : "double");
     for (int t = 0; t < nt; t++) {
-      const double *c = &cells[7 * t];
+      const double *c = &cells[6 * t];
       if (!index.count((tagint) c[0]) || !index.count((tagint) c[1]) || !index.count((tagint) c[2]))
         continue;
-      if (f == 0 || f == 3)
-        fmt::print(fp, "{}\n", (int) c[3 + f]);
+      if (f == 0)
+        fmt::print(fp, "{}\n", (int) c[3]);
       else
         fmt::print(fp, "{:.10g}\n", c[3 + f]);
     }

@@ -112,7 +112,7 @@ TEST_F(Lmp, TetherBreaksAboveCriticalStretch)
 
 // Two wall triangles 1-2-3 and 2-4-3 share the tether 2-3; the square is sheared so that 2-3 is
 // stretched 1.06x and the outer tethers about 1.03x. With lamf 1.05 only 2-3 may break, and then
-// the topology must follow: bond gone, both triangles off, 2 and 3 out of each other's special
+// the topology must follow: bond gone, both triangles gone, 2 and 3 out of each other's special
 // list and in the neighbor list (they repel), counts kept through a restart.
 class Patch : public Lmp {
  protected:
@@ -199,6 +199,7 @@ TEST_F(Patch, BrokenTetherUpdatesTopology)
   cmd("run 0");
   // broken in the setup force call: bond removed, triangles off, special lists updated
   EXPECT_EQ(lmp->atom->nbonds, 4);
+  EXPECT_EQ(lmp->atom->nangles, 0);
   EXPECT_FALSE(special_has(2, 3));
   EXPECT_FALSE(special_has(3, 2));
   EXPECT_TRUE(special_has(2, 1));
@@ -236,6 +237,7 @@ TEST_F(Patch, NoBreakBelowCriticalStretch)
   build("1 8e5 0.126 0.0 lamf 1.07");
   cmd("run 1");
   EXPECT_EQ(lmp->atom->nbonds, 5);
+  EXPECT_EQ(lmp->atom->nangles, 2);
   EXPECT_TRUE(special_has(2, 3));
   EXPECT_EQ(angle_types_on(2) + angle_types_on(4), 2);
   EXPECT_FALSE(pair23_listed());
