@@ -9,10 +9,14 @@ Neo-Hookean nonlinearity (a shift of order (lam-1)) stays well below the 1% tole
 the stiff cell's turgor stretch, is run as well and reported.
 """
 import math
-
-import numpy as np
+import os
+import sys
 
 import lmptest as T
+
+sys.path.insert(0, os.path.join(T.ROOT, "tools", "validation"))
+from analysis import crossing_period as period  # noqa: E402  (shared with tools/validate.sh)
+from references import mesh_factor, omega_a5    # noqa: E402
 
 R, M, LEVEL = 30.0, 1.3e4, 4
 CASES = {  # name: G (kPa), t0 (um), dt (us), steps
@@ -21,36 +25,15 @@ CASES = {  # name: G (kPa), t0 (um), dt (us), steps
 }
 
 
-def period(t, r, r0, nper):
-    """Period from the crossings of the rest radius r0 (both directions) over the first nper
-    periods. A tether network has no bending stiffness: in the compressive half cycle short-wave
-    buckling modes grow from round-off and, after a few periods, crumple the wall (the mean
-    radius then drifts below r0). The breathing mode is measured before that."""
-    y = r - r0
-    idx = np.where(np.sign(y[:-1]) * np.sign(y[1:]) < 0)[0]
-    tc = t[idx] - y[idx] * (t[idx + 1] - t[idx]) / (y[idx + 1] - y[idx])
-    if len(tc) < 2 * nper + 1:
-        raise SystemExit(f"fewer than {nper} periods recorded")
-    return (tc[2 * nper] - tc[0]) / nper
-
-
 def main():
     d = T.workdir("breathing")
     T.cellgen("cell", "-o", "wall.data", "--level", LEVEL, "--radius", R, "--nfluid", 0,
               "--wall-mass", M, cwd=d)
-    import sys
-    sys.path.insert(0, T.ROOT + "/tools")
-    import cellgen
-    nodes, tri, edges = cellgen.icosphere(LEVEL)
-    l = np.linalg.norm(nodes[edges[:, 0]] - nodes[edges[:, 1]], axis=1) * R
-    mesh = math.sqrt((l ** 2).sum() / (2 * math.sqrt(3) * 4 * math.pi * R * R))
+    mesh = mesh_factor(LEVEL)
     print(f"mesh factor sqrt(sum l0^2 / (2 sqrt3 4 pi R^2)) = {mesh:.5f}")
     print(f"{'wall':6s} {'lam':>6s} {'omega sim':>12s} {'omega A5':>12s} {'rel.err':>9s} periods")
     for name, (G, t0, dt, steps) in CASES.items():
-        E = 3.0 * G
-        rho_s = M / (4 * math.pi * R * R * t0)
-        omega = math.sqrt(4 * E / rho_s) / R     # rad/us
-        # paper units: rad/s, with the Table I moduli in Pa and its wall mass in kg
+        omega = omega_a5(G, t0, R, M)            # rad/us
         for lam in (1.002, 1.01):
             out = f"{name}-{lam}.dat"
             T.lmp(T.INPUTS + "/in.breathing", cwd=d, variables=dict(

@@ -12,34 +12,21 @@ Asserted: the ground mode within 6% (the paper: first two modes within 6% at c =
 Printed: the second mode's error (about -9% here: the SPH fluid near the wall, whose contact
 layer the analytic fluid sphere does not have, softens the first internal acoustic mode).
 """
-import math
 import os
 import subprocess
-
-import numpy as np
-from scipy.optimize import brentq
+import sys
 
 import lmptest as T
+
+sys.path.insert(0, os.path.join(T.ROOT, "tools", "validation"))
+import references  # noqa: E402  (Eq. A4, shared with tools/validate.sh)
+from analysis import strongest_modes  # noqa: E402
 
 R0, M, T0, E, RHO, C = 30.0, 1.3e4, 0.126, 2.4e6, 1.0, 264.6
 
 
 def a4_roots(Et, R, n=3):
-    rhost = M / (4 * math.pi * R * R)
-
-    def f(q):
-        j0 = math.sin(q) / q
-        j1 = math.sin(q) / q ** 2 - math.cos(q) / q
-        return j0 / j1 - q * rhost / (RHO * R) + 4 * Et / (q * RHO * C * C * R)
-
-    qs = np.linspace(0.05, 20, 20000)
-    v = np.array([f(q) for q in qs])
-    out = []
-    for a, b, va, vb in zip(qs[:-1], qs[1:], v[:-1], v[1:]):
-        # sign changes through zero, not the poles of j0/j1
-        if np.sign(va) != np.sign(vb) and abs(va) < 50 and abs(vb) < 50:
-            out.append(brentq(f, a, b) * C / R)
-    return out[:n]
+    return references.a4_roots(Et, R, M, RHO, C, n)
 
 
 def main():
@@ -54,9 +41,8 @@ def main():
     spec = subprocess.run([os.environ.get("CELLMECH_SPECTRUM", "cellmech-spectrum"),
                            f"{d}/breathing-fluid.dat", "2", "3"], capture_output=True, text=True,
                           check=True).stdout
-    peaks = sorted(([float(w) for w in l.split()[2:4]] for l in spec.splitlines()
-                    if l.startswith("# peak")), key=lambda p: -p[1])
-    modes = sorted(p[0] for p in peaks[:2])
+    peaks = [[float(w) for w in l.split()[2:4]] for l in spec.splitlines() if l.startswith("# peak")]
+    modes = strongest_modes(peaks, 2)
     R = R0 * lam
     plain = a4_roots(E * T0, R)
     pre = a4_roots(E * T0 * lam ** -8 - P * R / 4, R)

@@ -11,10 +11,15 @@ Asserted, with the issue's and the paper's criteria:
    integrated osmotic flux (round-off, 1e-9).
 """
 import math
+import os
+import sys
 
 import numpy as np
 
 import lmptest as T
+
+sys.path.insert(0, os.path.join(T.ROOT, "tools", "validation"))
+from references import young_laplace_stretch_at  # noqa: E402  (shared with tools/validate.sh)
 
 G, T0, R0 = 8.0e5, 0.126, 30.0
 
@@ -32,7 +37,7 @@ def main():
         last = a[-4:]
         P, lam, Feq = last[:, 4].mean(), last[:, 7].mean(), last[:, 9].mean()
         R = R0 * lam
-        lam_yl = (1 - P * R / 2 / (G * T0)) ** (-1 / 6)
+        lam_yl = young_laplace_stretch_at(P, R, G, T0)
         ratio = Feq / (P * math.pi * R * R)
         print(f"{Pt:8.0f} {P:8.2f} {lam:8.5f} {lam_yl:8.5f} {Feq:10.4g} {P * math.pi * R * R:10.4g} "
               f"{ratio:6.3f}   {T.performance(log)}")

@@ -1,0 +1,107 @@
+"""Issue 5: the validation suite (tools/validate.sh, tools/validation/) at RES=coarse, as CI runs
+it: 642 wall nodes, ~460 fluid particles (level 3), a few minutes on one core. The report and the
+JSON summary are written to work-validation/; each case is checked against a tolerance that the
+coarse resolution justifies (below, next to each check), and the summary must hold every case with
+its measured values, references, relative errors, resolution and wall time.
+
+Resolution scales used below (level 3): fluid-wall contact distance r0 = 3.2 um, R = 30 um, so
+r0/R = 0.107; kernel support 2s = 12.8 um. The SPH fluid ends a contact layer of thickness ~r0
+inside the wall, where the analytic models have a continuous fluid up to the wall: its pressure
+acts on a sphere of radius between R - r0 and R, an area (and force) factor between
+(1 - r0/R)^2 = 1 - 2 r0/R and 1. The tolerance 2 r0/R = 21% of the fluid-coupled cases is that
+bound, not an estimate; the paper-resolution tests (test_inflate_paper, test_breathing_fluid)
+assert the paper's 5-6% at r0/R = 0.053.
+"""
+import json
+import os
+import subprocess
+import sys
+
+import lmptest as T
+
+R0, RC0 = 30.0, 3.2
+LAYER = 2 * RC0 / R0
+
+
+def rows(case, group=None, contains=""):
+    return [r for r in case["rows"] if (group is None or r["group"] == group) and contains in r["name"]]
+
+
+def main():
+    d = T.workdir("validation")
+    env = dict(os.environ, RES="coarse", OUT=d, WORK=os.path.join(d, "work"),
+               LAMMPS_PLUGIN_PATH=os.path.dirname(T.PLUGIN))
+    p = subprocess.run([sys.executable, os.path.join(T.ROOT, "tools", "validation", "driver.py")],
+                       env=env, capture_output=True, text=True)
+    print(p.stdout[-6000:], p.stderr[-3000:])
+    T.check("validate.sh driver ran", p.returncode == 0, f"rc {p.returncode}")
+    summary = json.load(open(os.path.join(d, "validation-summary.json")))
+    cases = {c["id"].split("-")[0]: c for c in summary["cases"]}
+    T.check("summary has cases 1-7", sorted(cases) == [str(i) for i in range(1, 8)], f"{sorted(cases)}")
+    for k, c in sorted(cases.items()):
+        keys = all(x in c for x in ("measured", "reference", "rel_error", "resolution", "wall_time_s"))
+        res = c["resolution"]
+        T.check(f"case {k}: measured/reference/rel_error/resolution/wall time present", keys and
+                "wall_nodes" in res and "fluid_particles" in res and c["wall_time_s"] is not None)
+        # only the resolution study (three levels, ~12 min at the finest) is skipped at coarse
+        allowed = ("ok", "skipped") if k == "6" else ("ok",)
+        T.check(f"case {k}: status {c['status']}", c["status"] in allowed)
+        if c["status"] != "skipped":
+            T.check(f"case {k}: has results", len(c["rows"]) > 0)
+    T.check("report validation.md with plots", os.path.exists(os.path.join(d, "validation.md")) and
+            all(os.path.exists(os.path.join(d, "validation", p)) for c in cases.values() for p in c["plots"]))
+
+    def within(name, r, tol):
+        e = r["rel_error"]
+        T.check(name, e is not None and abs(e) < tol, f"{r['name']}: {e:+.2%} (tol {tol:.1%})"
+                if e is not None else "no error")
+
+    # 1: the wall alone has no fluid layer; the geodesic network's own frequency is Eq. A5 times
+    # its mesh factor (1.0031 at level 3), the Neo-Hookean amplitude shift is of order lam - 1 =
+    # 0.2%: the paper's 1% holds at this level as well.
+    for r in [x for x in cases["1"]["rows"] if x["name"].endswith("vs Eq. A5")]:
+        within(f"1: {r['name']} (1%)", r, 0.01)
+    # 2: ground breathing mode at c = 100 and 250 m/s within the contact-layer bound. At
+    # c = 50 m/s the ground period is about 0.8 us and the level-3 fluid (7 particles across
+    # the cell) carries it no better than the drift of the turgid cell: printed, not asserted.
+    for c in ("100", "250"):
+        r = rows(cases["2"], group=f"c{c}", contains="mode 1 vs A4 (c, rho0)")
+        T.check(f"2: c={c} ground mode found", len(r) == 1)
+        for x in r:
+            within(f"2: c={c} ground mode vs Eq. A4 (2 r0/R)", x, LAYER)
+    T.check("2: c=50 three modes found", len(rows(cases["2"], group="c50", contains="(c, rho0)")) == 3)
+    # 3: equatorial force against P pi R^2 within the contact-layer bound; the turgor itself is
+    # set by osmosis to -Pi whatever the resolution (1%, as test_inflate).
+    for r in rows(cases["3"], group="Feq"):
+        within(f"3: {r['name']} (2 r0/R)", r, LAYER)
+    for r in rows(cases["3"], group="P"):
+        within(f"3: {r['name']} (1%)", r, 0.01)
+    # 4: the sheet is the paper's 400 nodes at every RES: test_sheet's criteria. Small-strain
+    # modulus of the spring network within 5% (second-order tether term 2.5%, the rest edges);
+    # Eq. A1 at lam 1.01 within 5%; Eq. A2 within 20% from lam 1.15 on (the paper's statement).
+    for r in rows(cases["4"], group="modulus"):
+        within(f"4: {r['name']} (5%)", r, 0.05)
+    for r in [x for x in cases["4"]["rows"] if "vs Eq." in x["name"]]:
+        if "free, lam 1.01" in r["name"]:
+            within(f"4: {r['name']} (5%)", r, 0.05)
+        if "fixed, lam 1.15" in r["name"] or "fixed, lam 1.20" in r["name"]:
+            within(f"4: {r['name']} (20%)", r, 0.20)
+    # 5: the plate force against the membrane model (tools/membrane.py), for the stiff cell at
+    # 364 kPa: the fluid-contact bound as above, on the windowed force.
+    c5 = cases["5"]
+    stiff = [r for r in rows(c5, group="P364") if r["reference"] is not None]
+    T.check("5: membrane reference compared at 364 kPa", len(stiff) >= 4, f"{len(stiff)} strains")
+    for r in stiff:
+        within(f"5: {r['name']} vs membrane (2 r0/R)", r, LAYER)
+    # 6: not run at coarse (it needs the 10242-node level); the report says so.
+    T.check("6: resolution study skipped at RES=coarse with a statement",
+            cases["6"]["status"] == "skipped" and len(cases["6"]["notes"]) > 0)
+    # 7: test_energy's bounds (second-order, time-reversible integrator; see there).
+    for r in cases["7"]["rows"]:
+        T.check(f"7: {r['name']} below {r['tolerance']:g}", r["measured"] < r["tolerance"],
+                f"{r['measured']:.2e}")
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,514 @@
+"""The validation cases (issue 5). Each case runs its LAMMPS inputs through a Runner at a wall
+subdivision level and returns an Entry: measured values, references computed from the formulas
+(references.py), relative errors, the resolution, what the paper reported, notes and plots."""
+import math
+import os
+import re
+
+import numpy as np
+
+from common import (C_PHYS, INPUTS, LEVELS, M_WALL, R0, RHO0, SOFT, STIFF, T_INFLATE, model_vars,
+                    resolution)
+import analysis
+import references as ref
+
+COMPRESS_STRAINS = (0.05, 0.10, 0.15, 0.20)
+BREATHING_SPEEDS = (50.0, 100.0, 250.0)
+TURGOR_SERIES = (364.0, 30.0, 300.0, 3.0)
+YL_PRESSURES = (100.0, 200.0, 400.0)
+
+
+class Entry:
+    def __init__(self, cid, title, paper, res):
+        self.d = dict(id=cid, title=title, paper=paper, resolution=res, status="ok", rows=[],
+                      notes=[], plots=[], wall_time_s=None)
+
+    def add(self, name, measured, reference, unit="", tol=None, group=None):
+        err = None
+        if measured is not None and reference not in (None, 0) and np.isfinite(measured):
+            err = measured / reference - 1
+        self.d["rows"].append(dict(name=name, measured=_f(measured), reference=_f(reference),
+                                   rel_error=_f(err), unit=unit, tolerance=tol, group=group))
+        return err
+
+    def note(self, text):
+        self.d["notes"].append(text)
+
+    def finish(self):
+        r = self.d["rows"]
+        self.d["measured"] = {x["name"]: x["measured"] for x in r}
+        self.d["reference"] = {x["name"]: x["reference"] for x in r}
+        self.d["rel_error"] = {x["name"]: x["rel_error"] for x in r}
+        return self.d
+
+
+def _f(x):
+    return None if x is None else float(x)
+
+
+def _plt():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def _save(fig, ctx, name, entry):
+    path = os.path.join(ctx["plotdir"], name)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    _plt().close(fig)
+    entry.d["plots"].append(name)
+
+
+# ---- runs shared between cases (the Runner skips a run already done with the same settings) -----
+
+def turgid_state(run, infl):
+    a = np.loadtxt(run.path(infl), ndmin=2)    # step t V A P M Nf lam lammax Feq leak dM
+    last = a[-4:]
+    return dict(P=last[:, 4].mean(), lam=last[:, 7].mean(), Feq=last[:, 9].mean(),
+                leak=int(a[:, 10].max()), R=R0 * last[:, 7].mean())
+
+
+def compress(run, level, P):
+    """Inflate to P, compress to 22% strain at 0.5 m/s (quasistatic: test_compress shows 0.25 m/s
+    gives the same curve within 2%); return (eps, F) with F the mean of the two plate forces."""
+    restart, infl, nw, nf = run.inflate(level, P=P)
+    tag = f"L{level}-P{P:g}"
+    out = f"compress-{tag}.dat"
+    run.lmp("in.compress", f"log.compress-{tag}", outputs=(out,), dir=INPUTS, restart=restart,
+            vplate=0.5, every=100, out=out, strain=0.22, **model_vars(level))
+    a = np.loadtxt(run.path(out), ndmin=2)     # step t eps Ftop Fbot Feq P
+    return a[:, 2], 0.5 * (a[:, 3] + a[:, 4]), infl, nw, nf
+
+
+def window_half(level):
+    """The wall meets a plate ring of nodes by ring: steps of 2-3% strain at level 3, halving per
+    level. Forces are means over a window of that width."""
+    return 0.02 * 2.0 ** (3 - level)
+
+
+def breathe(run, level, c):
+    """Inflate to 364 kPa with sound speed c, kick the wall inward (0.5 m/s) and record the mean
+    radius for 10 us x (264.6/c) (the same number of ground periods at every c; frequency
+    resolution 2 pi / T, 0.63 rad/us at c = 264.6, 2% of the ground mode). Returns the spectrum."""
+    restart, infl, nw, nf = run.inflate(level, P=STIFF["P"], c=c)
+    mv = model_vars(level)
+    T = 10.0 * C_PHYS / c
+    tag = f"L{level}-c{c:g}"
+    out = f"breathing-{tag}.dat"
+    run.lmp("in.breathing-fluid", f"log.breathing-{tag}", outputs=(out,), dir=INPUTS,
+            restart=restart, c=c, nsteps=int(round(T / mv["dt"])), out=out, **mv)
+    # the turgid cell is not exactly at rest after the inflation: its mean radius drifts by a few
+    # nm over the record, as much as the breathing amplitude at low c. A cubic fitted over the
+    # record takes the drift out, and a peak needs 4 periods in the record to count as a mode.
+    a = np.loadtxt(run.path(out), ndmin=2)
+    t, r = a[:, 1], a[:, 2]
+    np.savetxt(run.path(f"detrended-{tag}.dat"), np.column_stack([t, r - np.polyval(np.polyfit(t, r, 3), t)]))
+    w, amp, peaks = run.spectrum(f"detrended-{tag}.dat", 1, 2)
+    peaks = [p for p in peaks if p[0] > 4 * 2 * math.pi / (t[-1] - t[0])]
+    return w, amp, peaks, infl, nw, nf
+
+
+# ---- case 1 ------------------------------------------------------------------------------------
+
+def case_breathing_vacuo(run, level, ctx):
+    e = Entry("1-breathing-vacuo", "In-vacuo breathing of the wall (Eq. A5)",
+              "simulation within 1% of Eq. A5 (stiff 3.451e7 rad/s, soft 5.943e5 rad/s)",
+              resolution(level, fluid=False))
+    data = f"wall{level}.data"
+    run.cellgen(data, "cell", "--level", level, "--nfluid", 0, "--wall-mass", M_WALL)
+    mesh = ref.mesh_factor(level)
+    k = LEVELS[level]["dt"] / 0.001          # level 5 halves the time step (lighter nodes)
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6, 3.5))
+    for name, p, dt, steps in (("stiff", STIFF, 0.001, 600), ("soft", SOFT, 0.02, 1500)):
+        out = f"vacuo-{name}-L{level}.dat"
+        run.lmp("in.breathing", f"log.vacuo-{name}-L{level}", outputs=(out,), data=data, G=p["G"],
+                t0=p["t0"], dt=dt * k, nsteps=int(steps / k), lam=1.002, out=out)
+        a = np.loadtxt(run.path(out), ndmin=2)
+        w = 2 * math.pi / analysis.crossing_period(a[:, 1], a[:, 2], R0, 2)
+        w5 = ref.omega_a5(p["G"], p["t0"], R0, M_WALL)
+        e.add(f"{name}: omega vs Eq. A5", w, w5, "rad/us", tol=0.01)
+        e.add(f"{name}: omega vs Eq. A5 x mesh factor", w, w5 * mesh, "rad/us")
+        ax.plot(a[:, 1] * w5 / (2 * math.pi), a[:, 2] / R0 - 1, label=f"{name} wall")
+    ax.set_xlabel("t / (2 pi / omega_A5)")
+    ax.set_ylabel("mean radius / R - 1")
+    ax.set_xlim(0, 3)
+    ax.legend()
+    _save(fig, ctx, "breathing-vacuo.png", e)
+    e.note(f"Wall released from an isotropic stretch of 1.002 (small, so the Neo-Hookean shift of "
+           f"order lam - 1 stays far below 1%). The period comes from the first two periods of the "
+           f"mean radius. The geodesic network's own uniform-mode frequency is Eq. A5 times "
+           f"sqrt(sum l0^2 / (2 sqrt3 4 pi R^2)) = {mesh:.5f} at this level (a mesh property, "
+           f"not a fit); the 1% tolerance applies at the paper's level 4.")
+    return e
+
+
+# ---- case 2 ------------------------------------------------------------------------------------
+
+def case_breathing_fluid(run, level, ctx):
+    e = Entry("2-breathing-fluid", "Breathing of the fluid-filled cell (Eq. A4)",
+              "ground mode and two more within 5-10% at c = 50 m/s; first two modes within 6% at "
+              "c = 250 m/s", resolution(level))
+    E, t0 = 3 * STIFF["G"], STIFF["t0"]
+    plt = _plt()
+    fig, axes = plt.subplots(len(BREATHING_SPEEDS), 1, figsize=(6, 2.3 * len(BREATHING_SPEEDS)))
+    for ax, c in zip(axes, BREATHING_SPEEDS):
+        w, amp, peaks, infl, nw, nf = breathe(run, level, c)
+        e.d["resolution"] = resolution(level, nw=nw, nf=nf)
+        st = turgid_state(run, infl)
+        n = 3 if c < 75 else 2
+        modes = analysis.strongest_modes(peaks, n)
+        nominal = ref.a4_roots(E * t0, st["R"], M_WALL, RHO0, c, n)
+        rho = ref.tait_density(st["P"], RHO0, c)
+        c_loc = ref.tait_sound_speed(rho, RHO0, c)
+        local = ref.a4_roots(E * t0, st["R"], M_WALL, rho, c_loc, n)
+        for i, wm in enumerate(modes):
+            tol = 0.10 if c < 75 else 0.06 if c > 200 and i < 2 else None     # the paper's
+            e.add(f"c={c:g}: mode {i + 1} vs A4 (c, rho0)", wm, nominal[i], "rad/us", tol=tol, group=f"c{c:g}")
+            e.add(f"c={c:g}: mode {i + 1} vs A4 (turgid c, rho)", wm, local[i], "rad/us", group=f"c{c:g}")
+        top = sorted(peaks, key=lambda p: -p[1])[:6]
+        e.note(f"c = {c:g} m/s: turgor {st['P']:.1f} kPa, stretch {st['lam']:.5f}, R {st['R']:.3f} um; "
+               f"fluid compressed to rho/rho0 = {rho:.4f} (Eq. 6), local sound speed "
+               f"c (rho/rho0)^3 = {c_loc:.1f} m/s. Strongest peaks, omega (rad/us) [amplitude "
+               f"relative to the first]: " +
+               ", ".join(f"{p[0]:.2f} [{p[1] / top[0][1]:.2f}]" for p in top) +
+               ". Eq. A4 roots: nominal " + ", ".join(f"{x:.2f}" for x in nominal) +
+               "; turgid " + ", ".join(f"{x:.2f}" for x in local) + ".")
+        w, amp = np.array(w), np.array(amp)
+        sel = w < 1.3 * max(nominal + local + modes)
+        ax.plot(w[sel], amp[sel] / amp[sel].max(), "k-", lw=1, label="simulation")
+        for i, x in enumerate(nominal):
+            ax.axvline(x, color="C0", ls="--", lw=1, label="A4 (c, rho0)" if i == 0 else None)
+        for i, x in enumerate(local):
+            ax.axvline(x, color="C3", ls=":", lw=1, label="A4 (turgid c, rho)" if i == 0 else None)
+        ax.set_title(f"c = {c:g} m/s", fontsize=9)
+        ax.set_ylabel("amplitude")
+        ax.legend(fontsize=7)
+    axes[-1].set_xlabel("omega (rad/us)")
+    _save(fig, ctx, "breathing-fluid.png", e)
+    e.note("Modes: the strongest spectral peaks of the mean wall radius (FFTW, Hann window; a cubic "
+           "fit over the record taken out first, peaks with fewer than 4 periods in the record "
+           "ignored), in increasing frequency; 3 at c = 50 m/s, 2 otherwise. Eq. A4 roots are computed for the "
+           "cell's own wall mass (rho_s t = M / 4 pi R^2) at the inflated radius, with E t = 3 G t0.")
+    return e
+
+
+# ---- case 3 ------------------------------------------------------------------------------------
+
+def case_young_laplace(run, level, ctx):
+    e = Entry("3-young-laplace", "Young-Laplace: equatorial force of the inflated cell",
+              "F_eq = P pi R^2 within 5% at P = 0.1, 0.2, 0.4 MPa", resolution(level))
+    G, t0 = STIFF["G"], STIFF["t0"]
+    xs, ys = [], []
+    for P in YL_PRESSURES:
+        _, infl, nw, nf = run.inflate(level, P=P)
+        e.d["resolution"] = resolution(level, nw=nw, nf=nf)
+        st = turgid_state(run, infl)
+        fyl = st["P"] * math.pi * st["R"] ** 2
+        e.add(f"P={P:g}: F_eq vs P pi R^2", st["Feq"], fyl, "nN", tol=0.05, group="Feq")
+        lam_yl = ref.young_laplace_stretch_at(st["P"], st["R"], G, t0)
+        e.add(f"P={P:g}: strain lam-1 vs Neo-Hookean Young-Laplace", st["lam"] - 1, lam_yl - 1,
+              group="strain")
+        e.add(f"P={P:g}: mean pressure vs -Pi", st["P"], P, "kPa", group="P")
+        if st["leak"]:
+            e.note(f"P = {P:g} kPa: {st['leak']} fluid particles outside the wall")
+        xs.append(fyl)
+        ys.append(st["Feq"])
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(4.5, 4))
+    ax.plot(np.array(xs) * 1e-3, np.array(ys) * 1e-3, "o", label="simulation")
+    lim = max(xs + ys) * 1.1e-3
+    ax.plot([0, lim], [0, lim], "k--", lw=1, label="F_eq = P pi R^2")
+    ax.set_xlabel("P pi R^2 (uN)")
+    ax.set_ylabel("F_eq (uN)")
+    ax.legend()
+    _save(fig, ctx, "young-laplace.png", e)
+    e.note("P and R = lam R0 are the simulation's mean fluid pressure and mean stretch after the "
+           "osmotic inflation (mean of the last 4 outputs). The strain row compares lam - 1 with "
+           "the Neo-Hookean tension P R / 2 = G t0 (1 - lam^-6).")
+    return e
+
+
+# ---- case 4 ------------------------------------------------------------------------------------
+
+def case_sheet(run, level, ctx):
+    N, A = 20, 2.5
+    e = Entry("4-sheet", "Uniaxial stretching of a 400-node tether sheet (Eqs. A1, A2)",
+              "good agreement with A1 up to lam = 1.2; A2 error below 20%",
+              dict(level=None, wall_nodes=N * N, fluid_particles=0))
+    G, t0 = STIFF["G"], STIFF["t0"]
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    for orient in ("x", "y"):
+        data = f"sheet-{orient}.data"
+        run.cellgen(data, "sheet", "--nx", N, "--ny", N, "--bond", A, "--orient", orient)
+        W = N * A * math.sqrt(3) / 2 if orient == "x" else N * A
+        for sides in ("free", "fixed"):
+            out = f"sheet-{orient}-{sides}.dat"
+            run.lmp("in.sheet", f"log.sheet-{orient}-{sides}", outputs=(out,), data=data,
+                    sides=sides, a=A, out=out)
+            a = np.loadtxt(run.path(out), ndmin=2)
+            lam, f = a[:, 0], a[:, 1] / (G * t0 * W)
+            paper = ref.sheet_a1(lam) if sides == "free" else ref.sheet_a2(lam)
+            eq = "A1" if sides == "free" else "A2"
+            nh = ref.sheet_neo_hookean(lam, sides)
+            for l, x, y, z in zip(lam, f, paper, nh):
+                # the paper's criterion for A2 (below 20%) read as test_sheet does: where the
+                # large-strain behaviour dominates (lam >= 1.15); its small-strain slope is 3,
+                # the network's 4.5
+                tol = 0.20 if sides == "fixed" and l >= 1.15 - 1e-9 else None
+                e.add(f"bonds {orient}, sides {sides}, lam {l:.2f}: F/(G t0 W) vs Eq. {eq}", x, y,
+                      tol=tol, group=f"{orient}-{sides}")
+                e.add(f"bonds {orient}, sides {sides}, lam {l:.2f}: F/(G t0 W) vs Neo-Hookean sheet",
+                      x, z, group=f"{orient}-{sides}-nh")
+            mod = ref.sheet_network_modulus(sides)
+            e.add(f"bonds {orient}, sides {sides}: modulus at lam {lam[0]:.2f} vs spring network",
+                  f[0] / (lam[0] - 1), mod, "G t0", group="modulus")
+            ax.plot(lam, f, "o" if sides == "free" else "s", mfc="none",
+                    label=f"bonds {orient}, {sides}")
+    ll = np.linspace(1, 1.2, 50)
+    ax.plot(ll, ref.sheet_a1(ll), "k-", lw=1, label="Eq. A1 (free)")
+    ax.plot(ll, ref.sheet_a2(ll), "k--", lw=1, label="Eq. A2 (fixed)")
+    ax.plot(ll, ref.sheet_neo_hookean(ll, "free"), "C7-", lw=1, label="Neo-Hookean, free")
+    ax.plot(ll, ref.sheet_neo_hookean(ll, "fixed"), "C7--", lw=1, label="Neo-Hookean, fixed")
+    ax.set_xlabel("lam")
+    ax.set_ylabel("F / (G t0 W)")
+    ax.legend(fontsize=7)
+    _save(fig, ctx, "sheet.png", e)
+    e.note("W is the loaded edge's tributary width. The sheet's resolution is the paper's (20 x 20 "
+           "nodes) at every RES. The small-strain modulus of a triangular spring network "
+           "(k = 6 G t0/sqrt3) is 4 G t0 with free sides and 4.5 G t0 with fixed ones; A1 and A2 "
+           "have small-strain slopes 4 and 4.5, so the large-strain rows show where the tether "
+           "law departs from the paper's formulas.")
+    return e
+
+
+# ---- case 5 ------------------------------------------------------------------------------------
+
+def membrane_reference(P, strains, rho):
+    """(forces in nN of the membrane model, tools/membrane.py, at the strains, or None; a message
+    when there is none). The contents' bulk modulus is the Tait fluid's,
+    rho dP/drho = rho0 c^2 (rho/rho0)^7."""
+    try:
+        import membrane
+    except ImportError:
+        return None, "tools/membrane.py (the membrane reference) is missing"
+    K = RHO0 * C_PHYS ** 2 * (rho / RHO0) ** 7
+    try:
+        curve = membrane.compress_curve(STIFF["G"] * STIFF["t0"], R0, P, list(strains), bulk_modulus=K)
+    except Exception as exc:
+        return None, f"the membrane solver failed at P = {P:g} kPa: {type(exc).__name__}: {exc}"
+    return [c["F"] if c is not None else None for c in curve], None
+
+
+def case_compression(run, level, ctx):
+    e = Entry("5-compression", "Quasistatic compression against the membrane model",
+              "force-strain matches the analytical membrane model up to 20% strain (Fig. 4); "
+              "higher turgor is stiffer at small strain, curves parallel at large strain (Fig. 5)",
+              resolution(level))
+    half = window_half(level)
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    missing = False
+    for i, P in enumerate(TURGOR_SERIES):
+        eps, F, infl, nw, nf = compress(run, level, P)
+        e.d["resolution"] = resolution(level, nw=nw, nf=nf)
+        st = turgid_state(run, infl)
+        Fw = analysis.windowed(eps, F, COMPRESS_STRAINS, half)
+        rho = ref.tait_density(st["P"], RHO0, C_PHYS)
+        fine = np.arange(0.01, 0.2001, 0.01)
+        mem, why = membrane_reference(st["P"], fine, rho)
+        if mem is None:
+            missing = True
+            e.note(f"P = {P:g} kPa: reference missing ({why}).")
+        for x, s in zip(Fw, COMPRESS_STRAINS):
+            r = None if mem is None else mem[int(round(s / 0.01)) - 1]
+            e.add(f"P={P:g}: F at eps {s:.2f}", x, r, "nN", tol=None, group=f"P{P:g}")
+        ax.plot(eps, F * 1e-3, f"C{i}-", lw=1, label=f"P = {P:g} kPa (sim)")
+        ax.plot(COMPRESS_STRAINS, Fw * 1e-3, f"C{i}o", ms=4)
+        if mem is not None:
+            ok = [(s, m) for s, m in zip(fine, mem) if m is not None]
+            ax.plot([s for s, _ in ok], [m * 1e-3 for _, m in ok], f"C{i}--", lw=1.5,
+                    label=f"P = {P:g} kPa (membrane)")
+    ax.set_xlim(0, 0.22)
+    ax.set_xlabel("strain eps = DeltaX / 2R")
+    ax.set_ylabel("plate force (uN)")
+    ax.legend(fontsize=7)
+    _save(fig, ctx, "compression.png", e)
+    if missing:
+        e.d["status"] = "reference missing"
+    e.note(f"Plate speed 0.5 m/s (quasistatic). Forces are the mean of both plates, averaged over "
+           f"|eps - eps_i| < {half:g}: the wall meets a plate ring of nodes by ring, which steps "
+           f"the raw curve. The membrane model gets the simulation's turgor and the fluid's bulk "
+           f"modulus rho0 c^2 (rho/rho0)^7 at that turgor.")
+    return e
+
+
+# ---- case 6 ------------------------------------------------------------------------------------
+
+def case_resolution(run, level, ctx):
+    levels = ctx["study_levels"]
+    e = Entry("6-resolution", "Resolution study: 642 / 2562 / 10242 wall nodes",
+              "14000 SPH + 10242 DEM particles give spectra and impact curves consistent with the "
+              "3500 + 2562 resolution (Fig. 17); half the particles give clearly worse "
+              "compression curves (Fig. 4)",
+              dict(levels=levels, wall_nodes=[10 * 4 ** l + 2 for l in levels],
+                   fluid_particles=[LEVELS[l]["nfluid"] for l in levels]))
+    if ctx["res"] not in ("paper", "study"):
+        e.d["status"] = "skipped"
+        e.note("Skipped at RES=coarse: an observed order needs three levels, and the third "
+               "(10242 wall nodes, 14000 fluid particles, dt = 0.5 ns) costs about 10 ms per "
+               "step on one core, some 20 minutes for its inflation, compression and breathing, "
+               "beyond a CI budget. Run RES=paper or RES=study.")
+        return e
+    keys = ("F(eps 0.10)", "F(eps 0.20)", "omega1 (c=264.6)", "omega2 (c=264.6)")
+    got, nfs, analytic, diag = {}, {}, {}, {}
+    for l in levels:            # any order (STUDY_LEVELS); the analysis sorts by level
+        s0 = run.seconds
+        try:
+            eps, F, infl, nw, nf = compress(run, l, STIFF["P"])
+            Fw = analysis.windowed(eps, F, (0.10, 0.20), window_half(l))
+            _, _, peaks, _, _, _ = breathe(run, l, C_PHYS)
+            w = analysis.strongest_modes(peaks, 2)
+            st = turgid_state(run, infl)
+            mem, _ = membrane_reference(st["P"], (0.10, 0.20), ref.tait_density(st["P"], RHO0, C_PHYS))
+            a4 = ref.a4_roots(3 * STIFF["G"] * STIFF["t0"], st["R"], M_WALL, RHO0, C_PHYS, 2)
+            analytic[l] = (mem or [None, None]) + a4
+            a = np.loadtxt(run.path(f"compress-L{l}-P{STIFF['P']:g}.dat"), ndmin=2)
+            top = analysis.windowed(a[:, 2], a[:, 3], (0.10, 0.20), window_half(l))
+            bot = analysis.windowed(a[:, 2], a[:, 4], (0.10, 0.20), window_half(l))
+            diag[l] = (st["lam"], ref.young_laplace_stretch_at(st["P"], st["R"], STIFF["G"], STIFF["t0"]),
+                       top / bot)
+        except Exception as exc:   # keep the levels that finished
+            e.note(f"level {l}: {exc}".splitlines()[0])
+            continue
+        got[l], nfs[l] = (Fw[0], Fw[1], w[0], w[1]), nf
+        m = re.findall(r"Loop time of ([\d.eE+-]+) on (\d+) procs for (\d+) steps",
+                       open(run.path(f"log.compress-L{l}-P{STIFF['P']:g}")).read())
+        if m:
+            e.note(f"level {l}: compression {float(m[-1][0]) / int(m[-1][2]) * 1e3:.1f} ms per step "
+                   f"on {m[-1][1]} rank(s) (a shared machine: other work ran beside it)")
+        dx = float(re.search(r"spacing ([\d.]+)", open(run.path(f"cell{l}.data.info")).read()).group(1))
+        e.note(f"level {l}: fluid spacing dx = {dx:.3f} um, smoothing length s = {LEVELS[l]['s']:g} um, "
+               f"s/dx = {LEVELS[l]['s'] / dx:.3f}")
+        e.note(f"level {l} ({10 * 4 ** l + 2} wall nodes, {nf} fluid particles, dt = "
+               f"{LEVELS[l]['dt'] * 1e3:g} ns): inflation {T_INFLATE[l]:g} us, compression to 22% "
+               f"strain, breathing 10 us; LAMMPS wall time of these runs {run.seconds - s0:.0f} s")
+        ctx["save"](e)             # partial results reach the report
+    done = sorted(got)
+    e.d["resolution"]["fluid_particles"] = [nfs.get(l, LEVELS[l]["nfluid"]) for l in levels]
+    e.d["study"] = {}
+    metrics = {}
+    for i, k in enumerate(keys):
+        vals = [got[l][i] for l in done]
+        metrics[k] = vals
+        p, extra = (ref.observed_order(*vals) if len(vals) == 3 else (None, None))
+        e.d["study"][k] = dict(levels=done, values=[float(v) for v in vals], order=p,
+                               extrapolated=extra)
+        unit = "nN" if k.startswith("F") else "rad/us"
+        for l, v in zip(done, vals):
+            e.add(f"{k}, level {l} vs Richardson extrapolate", v, extra, unit, group=k)
+        for l, v in zip(done, vals):
+            e.add(f"{k}, level {l} vs {'membrane model' if k.startswith('F') else 'Eq. A4'}", v,
+                  analytic[l][i], unit, group=k + " analytic")
+        e.note(f"{k}: " + ", ".join(f"L{l} {v:.5g}" for l, v in zip(done, vals)) +
+               (f"; observed order {p:.2f}, Richardson extrapolate {extra:.5g}" if p else
+                "; no monotone convergence over these levels (no order)" if len(vals) == 3 else ""))
+    for l in done:
+        lam, lam_yl, ratio = diag[l]
+        e.add(f"turgid strain lam-1 at 364 kPa, level {l} vs Neo-Hookean Young-Laplace",
+              lam - 1, lam_yl - 1, group="diagnostics")
+        for x, r in zip((0.10, 0.20), ratio):
+            e.add(f"top/bottom plate force at eps {x:.2f}, level {l} (force balance)", r, 1.0,
+                  group="diagnostics")
+    e.note("Reference of each row: the Richardson extrapolate of the three levels (refinement "
+           "ratio 2 in spacing), f_inf = f_5 + (f_5 - f_4)/(2^p - 1), p = log2((f_3 - f_4)/(f_4 - f_5)). "
+           "The ratio 2 is the wall's; with the paper's fluid counts the fluid spacing shrinks by "
+           "about 1.9 and 1.55 (see dx above), so the order is nominal. "
+           "Compression at 364 kPa and 0.5 m/s, forces windowed as in case 5 (window halving per "
+           "level); breathing of the physical stiff cell (c = 264.6 m/s), the two strongest peaks.")
+    if len(done) < len(levels):
+        e.d["status"] = "partial"
+    plt = _plt()
+    fig, axes = plt.subplots(1, 2, figsize=(8, 3.3))
+    for k, vals in metrics.items():
+        ax = axes[0] if k.startswith("F") else axes[1]
+        if vals:
+            ax.plot([10 * 4 ** l + 2 for l in done], vals, "o-", label=k)
+    for ax, yl in zip(axes, ("plate force (nN)", "omega (rad/us)")):
+        ax.set_xscale("log")
+        ax.set_xlabel("wall nodes")
+        ax.set_ylabel(yl)
+        ax.legend(fontsize=7)
+    _save(fig, ctx, "resolution.png", e)
+    return e
+
+
+# ---- case 7 ------------------------------------------------------------------------------------
+
+ENERGY_EXTRA = """
+variable        etot equal ke+pe
+variable        kin equal ke
+variable        tt equal time
+fix             erec all ave/time {n} 1 {n} v_tt v_kin v_etot file {out} format " %.15g"
+run             {steps}
+"""
+ENERGY_DEV, ENERGY_DRIFT = 1e-3, 2e-4
+
+
+def energy_run(run, level, data):
+    """Inviscid cell (viscosity, tether and contact damping, osmosis off) whose fluid starts at
+    P0 = 100 kPa: it pushes the wall out and oscillates for 20 us. Returns (t, ke, etot)."""
+    mv = model_vars(level)
+    steps = int(round(20.0 / mv["dt"]))
+    out = f"energy-L{level}.dat"
+    text = f"include {INPUTS}/in.inflate\n" + ENERGY_EXTRA.format(n=steps // 1000, out=out, steps=steps)
+    run.lmp(text, f"log.energy-L{level}", outputs=(out,), dir=INPUTS, data=data, nsteps=0, Lp=0.0,
+            Pi=0.0, P0=100.0, mu=0.0, gamma=0.0, gc=0.0, **mv)
+    a = np.loadtxt(run.path(out), ndmin=2)
+    return a[:, 1], a[:, 2], a[:, 3]
+
+
+def case_energy(run, level, ctx):
+    e = Entry("7-energy", "Inviscid energy balance",
+              "not reported by the paper (a consistency check of the integrator and forces)",
+              resolution(level))
+    data, nw, nf = run.cell(level)
+    e.d["resolution"] = resolution(level, nw=nw, nf=nf)
+    t, ke, et = energy_run(run, level, data)
+    dev, drift = analysis.energy_balance(t, ke, et)
+    # the bounds are test_energy's at level 3; the error scales with (omega dt)^2, omega ~ c/s
+    scale = ((LEVELS[level]["dt"] / LEVELS[level]["s"]) / (LEVELS[3]["dt"] / LEVELS[3]["s"])) ** 2
+    e.add("max abs(E - E0) / max KE", dev, 0.0, tol=ENERGY_DEV * scale)
+    e.d["rows"][-1]["rel_error"] = float(dev)
+    e.add("secular drift / max KE", drift, 0.0, tol=ENERGY_DRIFT * scale)
+    e.d["rows"][-1]["rel_error"] = float(drift)
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6, 3.3))
+    ax.plot(t - t[0], (et - et[0]) / ke.max(), "k-", lw=1, label="(E - E0) / max KE")
+    ax.plot(t - t[0], ke / ke.max() * ENERGY_DEV, "C0-", lw=0.7, label=f"KE / max KE x {ENERGY_DEV:g}")
+    ax.set_xlabel("t (us)")
+    ax.legend(fontsize=7)
+    _save(fig, ctx, "energy.png", e)
+    e.note("Reference: exact conservation (0); the error column is the deviation per the largest "
+           "kinetic energy. Bound: velocity Verlet with the density leapfrogging the velocities is "
+           "second order and time-reversible; its energy error oscillates with amplitude "
+           "~ (omega dt)^2 times the energy in the fastest modes (omega ~ c/s): at level 3 "
+           f"(s = 6.4 um, dt = 1 ns) the deviation must stay below {ENERGY_DEV:g} of the largest "
+           f"kinetic energy and the secular drift below {ENERGY_DRIFT:g} of it "
+           "(tests/test_energy.py); at other levels both bounds scale with (dt/s)^2 "
+           f"(x{scale:g} here).")
+    return e
+
+
+CASES = {
+    "1": case_breathing_vacuo,
+    "2": case_breathing_fluid,
+    "3": case_young_laplace,
+    "4": case_sheet,
+    "5": case_compression,
+    "6": case_resolution,
+    "7": case_energy,
+}

@@ -1,0 +1,201 @@
+"""Running LAMMPS and cellgen for the validation cases; the resolutions of the model.
+
+A run is skipped when its outputs exist and were made with the same arguments (a stamp file per
+run), so that cases sharing an inflation (and a resumed paper-resolution run) do not repeat it.
+"""
+import hashlib
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+ROOT = os.environ.get("CELLMECH_ROOT",
+                      os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+# the driver points this to a copy of lammps-inputs taken when it starts: LAMMPS reads its input
+# as it goes, so a long validation run must not see the inputs edited under it
+INPUTS = os.environ.get("CELLMECH_INPUTS", os.path.join(ROOT, "lammps-inputs"))
+CELLGEN = os.path.join(ROOT, "tools", "cellgen.py")
+SPECTRUM = os.environ.get("CELLMECH_SPECTRUM", os.path.join(ROOT, "build", "cellmech-spectrum"))
+
+# Model lengths per level (tools/main-job.sh): a level coarser doubles the wall spacing, the
+# contact distance r0 and the barycentre reach, and the contact strength f0 (force x length,
+# acting at r0) grows 2^3. Level 4 is the paper's (2562 + 3500). The smoothing length s belongs to
+# the fluid and follows the fluid spacing dx: the paper's fluid counts (440, 3500, 14000) refine
+# dx by 1.9 from level 3 to 4 (5.71 -> 3.01 um) but only by 1.55 from 4 to 5 (-> 1.95 um), so
+# level 5 keeps level 4's s/dx = 1.063 with s = 2.07 um (halving s to 1.6 would leave s/dx = 0.82,
+# fewer kernel neighbours than at the other levels). Level 5 has a wall node a quarter as heavy:
+# its fastest tether mode (about 4 ns period) needs dt = 0.5 ns.
+LEVELS = {
+    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001),
+    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001),
+    5: dict(nfluid=14000, s=2.07, r0=0.8, f0=1.25e3, reach=1.0, dt=0.0005),
+}
+# osmotic inflation time (us): level 5 reaches its turgor by 3 us (measured: 363.8 kPa at 2 us);
+# 10 us leave 7 us (several relaxation times) for the inflation's oscillation to die out, at half
+# the cost of the 20 us that levels 3 and 4 can afford
+T_INFLATE = {3: 20.0, 4: 20.0, 5: 10.0}
+RES_LEVEL = {"coarse": 3, "paper": 4, "study": 4, "fine": 5}
+
+# the stiff cell of Table I (MODEL.md section 2), units micro
+R0, M_WALL, RHO0, C_PHYS = 30.0, 1.3e4, 1.0, 264.6
+STIFF = dict(G=8.0e5, t0=0.126, P=364.0)
+SOFT = dict(G=20.0e3 / 3.0, t0=0.005, P=0.1)
+
+
+def wall_nodes(level):
+    return 10 * 4 ** level + 2
+
+
+def model_vars(level):
+    p = LEVELS[level]
+    return dict(s=p["s"], r0=p["r0"], f0=p["f0"], reach=p["reach"], dt=p["dt"])
+
+
+_CODE = []
+USED_INPUTS = ("cell-model.lmp", "in.inflate", "in.compress", "in.breathing", "in.breathing-fluid",
+               "in.sheet")
+
+
+def code_version():
+    """Digest of the LAMMPS inputs and the plugin library: a run made with other inputs or
+    another build of the plugin is not reused."""
+    if not _CODE:
+        h = hashlib.sha1()
+        for f in USED_INPUTS:
+            h.update(f.encode() + open(os.path.join(INPUTS, f), "rb").read())
+        plugin = os.path.join(os.environ.get("LAMMPS_PLUGIN_PATH", os.path.join(ROOT, "build")),
+                              "cellmechplugin.so")
+        if os.path.exists(plugin):
+            h.update(open(plugin, "rb").read())
+        _CODE.append(h.hexdigest()[:16])
+    return _CODE[0]
+
+
+def log_wall_time(text):
+    """Seconds of 'Total wall time: H:MM:SS' in a LAMMPS log (0 if absent)."""
+    m = re.findall(r"Total wall time: (\d+):(\d+):(\d+)", text)
+    if not m:
+        return 0.0
+    h, mi, se = map(int, m[-1])
+    return 3600.0 * h + 60.0 * mi + se
+
+
+class Runner:
+    def __init__(self, work, nprocs=1, log=print):
+        self.work = work
+        self.nprocs = nprocs
+        self.lmp_exe = os.environ.get("LMP", "lmp")
+        self.mpiexec = os.environ.get("MPIEXEC") or "mpirun"
+        self.say = log
+        # LAMMPS wall time of the runs a case used, reused ones included, and the time spent
+        # here in runs made now: the driver reports a case's cost as the first plus its own
+        # analysis time, the same whether its runs were made now or by an earlier case
+        self.reset_time()
+        os.makedirs(work, exist_ok=True)
+
+    def reset_time(self):
+        self.seconds = self.fresh_seconds = 0.0
+        self.counted = set()
+
+    def _count(self, log, text):
+        if log not in self.counted:       # a run used twice by one case counts once
+            self.counted.add(log)
+            self.seconds += log_wall_time(text)
+
+    def path(self, *p):
+        return os.path.join(self.work, *p)
+
+    def _fresh(self, stamp, key):
+        try:
+            return json.load(open(stamp)) == key
+        except (OSError, ValueError):
+            return False
+
+    def cellgen(self, out, *args):
+        """Write data file `out` (in the work folder); return (wall nodes, fluid per cell)."""
+        stamp = self.path(out + ".stamp")
+        key = [str(a) for a in args]
+        if not self._fresh(stamp, key) or not os.path.exists(self.path(out)):
+            p = subprocess.run([sys.executable, CELLGEN, *key[:1], "-o", out, *key[1:]],
+                               cwd=self.work, check=True, capture_output=True, text=True)
+            with open(self.path(out + ".info"), "w") as f:
+                f.write(p.stdout)
+            json.dump(key, open(stamp, "w"))
+        info = open(self.path(out + ".info")).read()
+        m = re.search(r"\((\d+) wall nodes\), (\d+) fluid per cell", info)
+        return (int(m.group(1)), int(m.group(2))) if m else (None, None)
+
+    def lmp(self, script, log, outputs=(), **variables):
+        """Run lmp on lammps-inputs/`script` with -var settings; skip if `outputs` (files in the
+        work folder) exist from a run with the same settings, inputs and plugin. Returns the log
+        text."""
+        stamp = self.path(log + ".stamp")
+        key = dict(script=script, nprocs=self.nprocs, code=code_version(),
+                   **{k: str(v) for k, v in variables.items()})
+        if outputs and self._fresh(stamp, key) and all(os.path.exists(self.path(o)) for o in outputs):
+            text = open(self.path(log)).read()
+            self._count(log, text)
+            return text
+        if "\n" in script:    # an input text (e.g. 'include in.inflate' plus commands)
+            with open(self.path("in." + log), "w") as f:
+                f.write(script)
+            inp = self.path("in." + log)
+        else:
+            inp = os.path.join(INPUTS, script)
+        cmd = [self.lmp_exe, "-in", inp, "-log", log, "-screen", "none"]
+        for k, v in variables.items():
+            cmd += ["-var", k, str(v)]
+        if self.nprocs > 1:
+            cmd = [self.mpiexec, "--allow-run-as-root", "--oversubscribe", "-np", str(self.nprocs)] + cmd
+        t = time.time()
+        p = subprocess.run(cmd, cwd=self.work, capture_output=True, text=True)
+        text = open(self.path(log)).read() if os.path.exists(self.path(log)) else ""
+        if p.returncode != 0:
+            raise RuntimeError(f"lmp failed (rc {p.returncode}): {' '.join(cmd)}\n{text[-2000:]}"
+                               f"\n{p.stdout[-1000:]}\n{p.stderr[-1000:]}")
+        self.say(f"    {log}: {time.time() - t:.0f} s")
+        self._count(log, text)
+        self.fresh_seconds += time.time() - t
+        json.dump(key, open(stamp, "w"))
+        return text
+
+    def spectrum(self, datafile, tcol=2, ycol=3):
+        """(omega, amplitude, peaks[(omega, amplitude)]) from tools/spectrum (FFTW)."""
+        out = subprocess.run([SPECTRUM, self.path(datafile), str(tcol), str(ycol)],
+                             capture_output=True, text=True, check=True).stdout
+        w, a, peaks = [], [], []
+        for line in out.splitlines():
+            if line.startswith("# peak"):
+                peaks.append(tuple(float(x) for x in line.split()[2:4]))
+            elif line and not line.startswith("#"):
+                x, y = line.split()[:2]
+                w.append(float(x))
+                a.append(float(y))
+        return w, a, peaks
+
+    # ---- the standard cell runs, shared between cases -----------------------------------
+
+    def cell(self, level):
+        data = f"cell{level}.data"
+        nw, nf = self.cellgen(data, "cell", "--level", level, "--nfluid", LEVELS[level]["nfluid"],
+                              "--inset", LEVELS[level]["r0"])
+        return data, nw, nf
+
+    def inflate(self, level, P=STIFF["P"], c=C_PHYS, t_us=None):
+        """Inflate the stiff cell at `level` to turgor P (kPa) with sound speed c; return
+        (restart file, inflate.dat name, wall nodes, fluid particles)."""
+        data, nw, nf = self.cell(level)
+        tag = f"L{level}-P{P:g}-c{c:g}"
+        mv = model_vars(level)
+        nsteps = int(round((t_us or T_INFLATE[level]) / mv["dt"]))
+        self.lmp("in.inflate", f"log.inflate-{tag}", outputs=(f"inflate-{tag}.dat", f"inflated-{tag}.restart"),
+                 dir=INPUTS, data=data, Pi=-P, c=c, nsteps=nsteps, every=nsteps // 20,
+                 out=f"inflate-{tag}.dat", restart_out=f"inflated-{tag}.restart", **mv)
+        return f"inflated-{tag}.restart", f"inflate-{tag}.dat", nw, nf
+
+
+def resolution(level, fluid=True, nw=None, nf=None):
+    return dict(level=level, wall_nodes=nw if nw is not None else wall_nodes(level),
+                fluid_particles=(nf if nf is not None else LEVELS[level]["nfluid"]) if fluid else 0)
