@@ -25,6 +25,7 @@
 #include "fix_cell_tether_break.h"
 
 #include "atom.h"
+#include "atom_vec.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -120,7 +121,8 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
   // data files) and the global angle count ...
   bigint removed_local = 0, removed = 0;
   const int newton_bond = force->newton_bond;
-  for (int i = 0; i < nlocal; i++) {
+  // (an atom style without angles, e.g. bond, has no triangles to update)
+  for (int i = 0; i < nlocal && atom->avec->angles_allow; i++) {
     int m = 0;
     while (m < atom->num_angle[i]) {
       if (!edge_of(atom->angle_atom1[i][m], atom->angle_atom2[i][m], atom->angle_atom3[i][m])) {

@@ -244,6 +244,21 @@ TEST_F(Patch, NoBreakBelowCriticalStretch)
   EXPECT_EQ(lmp->modify->get_fix_by_id("cell_broken")->compute_scalar(), 0.0);
 }
 
+TEST_F(Lmp, TetherBreaksWithoutAngles)
+{
+  // atom_style bond has no angle arrays: a break must not touch them
+  cmds({"units micro", "atom_style bond", "atom_modify map array",
+        "region box block -10 10 -10 10 -10 10",
+        "create_box 1 box bond/types 1 extra/bond/per/atom 1 extra/special/per/atom 2",
+        "fix ref all property/atom d2_cellref 3 ghost yes", "mass 1 5.0",
+        "create_atoms 1 single 0 0 0", "create_atoms 1 single 2.7 0 0",
+        "set atom 2 d2_cellref[1] 2.5", "create_bonds single/bond 1 1 2", "special_bonds lj 0 1 1",
+        "bond_style cell/tether", "bond_coeff 1 8e5 0.126 0.0 lamf 1.04", "pair_style zero 1.0",
+        "pair_coeff * *", "run 0"});
+  EXPECT_EQ(lmp->atom->nbonds, 0);
+  EXPECT_EQ(lmp->modify->get_fix_by_id("cell_broken")->compute_scalar(), 1.0);
+}
+
 TEST_F(Lmp, Repulsion84InLammps)
 {
   const double f0 = 3.0, r0 = 2.0, r = 1.7;
