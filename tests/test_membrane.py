@@ -218,6 +218,93 @@ def main():
         T.check(f"(f) P {P:g}: log slope -> 1", abs(slopes[0] - 1.0) < 1e-2
                 and abs(slopes[0] - 1.0) < abs(slopes[1] - 1.0), f"{slopes[0]:.5f}")
 
+    # ---- (h) material="network": the orientation-averaged tether network (Eq. 19 bonds)
+    print("\n(h) network law: W against direct quadrature over bond directions, tensions, moduli")
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    def bond(lam):          # Eq. 19 bond energy per G t0 l0^2 / sqrt3 (cell_physics.h)
+        return 0.5 * lam * lam - 0.75 + 0.25 * lam ** -4
+
+    werr, terr = 0.0, 0.0
+    for l1, l2 in ((1.1, 0.95), (1.3, 1.05), (0.9, 1.2)):
+        Wq = 2.0 * quad(lambda ph: bond(math.hypot(l1 * math.cos(ph), l2 * math.sin(ph))),
+                        0.0, 2.0 * math.pi, epsabs=1e-15, epsrel=1e-13)[0] / (2.0 * math.pi)
+        werr = max(werr, abs(M.network_energy_density(l1, l2) - Wq))
+        # T_i = (dW/dl_i) / l_j by central differences: O(h^2) ~ 1e-12, round-off 1e-16/h
+        h = 1e-5
+        W = M.network_energy_density
+        T1 = (W(l1 + h, l2) - W(l1 - h, l2)) / (2 * h) / l2
+        T2 = (W(l1, l2 + h) - W(l1, l2 - h)) / (2 * h) / l1
+        d11 = (M.network_tensions(l1 + h, l2)[0] - M.network_tensions(l1 - h, l2)[0]) / (2 * h)
+        d12 = (M.network_tensions(l1, l2 + h)[0] - M.network_tensions(l1, l2 - h)[0]) / (2 * h)
+        Tn, dn = M.network_tensions(l1, l2), M.network_dtension1(l1, l2)
+        terr = max(terr, abs(T1 - Tn[0]), abs(T2 - Tn[1]), abs(d11 - dn[0]), abs(d12 - dn[1]))
+    print(f"  closed-form W vs quadrature: {werr:.1e};  T, dT1 vs differences of W, T: {terr:.1e}")
+    T.check("(h) network W is the orientation average of the bond energy", werr < 1e-12,
+            f"{werr:.1e}")
+    T.check("(h) network tensions are W's derivatives", terr < 1e-8, f"{terr:.1e}")
+    eq = max(abs(M.network_tensions(l, l)[0] / M.tensions(l, l)[0] - 1.0)
+             for l in (1.0001, 1.01, 1.0303, 1.1, 1.25))
+    l = 1.01
+    print(f"  equibiaxial lam {l}: T/(G t0) Neo-Hookean {M.tensions(l, l)[0]:.15g}, network "
+          f"{M.network_tensions(l, l)[0]:.15g}; max relative difference lam 1.0001..1.25 {eq:.1e}")
+    # the two laws are the same function equibiaxially: round-off only (1 - lam^-6 cancels
+    # ~ 1/(lam - 1) = 1e4 at lam 1.0001)
+    T.check("(h) equibiaxial tension: network = Neo-Hookean", eq < 1e4 * 4 * sys.float_info.epsilon,
+            f"{eq:.1e}")
+    e = 1e-4
+    mu = {m: (law[0](1 + e, 1 - e)[0] - law[0](1 + e, 1 - e)[1]) / (4 * e)
+          for m, law in M.MATERIALS.items()}
+    # uniaxial: T2 = 0 sets the lateral stretch; E = T1 / e
+    E = {}
+    for m, law in M.MATERIALS.items():
+        l2 = brentq(lambda x: law[0](1 + e, x)[1], 0.99, 1.0, xtol=1e-15)
+        E[m] = law[0](1 + e, l2)[0] / e
+    print(f"  small strain (e = 1e-4): shear modulus NH {mu['neohookean']:.8f}, network "
+          f"{mu['network']:.8f} G t0; uniaxial modulus NH {E['neohookean']:.6f}, network "
+          f"{E['network']:.6f} G t0 (triangular net: mu = sqrt3 k / 4, E = 2 k / sqrt3)")
+    # pure shear is even in e: the deviation is O(e^2) = 1e-8; uniaxial is O(e) ~ 1e-3 relative
+    T.check("(h) shear modulus 1.5 G t0 (network), G t0 (NH)",
+            abs(mu["network"] - 1.5) < 1e-7 and abs(mu["neohookean"] - 1.0) < 1e-7,
+            f"{mu['network'] - 1.5:+.1e}, {mu['neohookean'] - 1.0:+.1e}")
+    T.check("(h) uniaxial modulus 4 G t0 (network), 3 G t0 (NH)",
+            abs(E["network"] / 4.0 - 1.0) < 2e-3 and abs(E["neohookean"] / 3.0 - 1.0) < 2e-3,
+            f"{E['network']:.5f}, {E['neohookean']:.5f}")
+
+    print("\n(h) network compression, 364 kPa, incompressible: balances, tension field, virtual work")
+    cn = M.Curve(G_T0, R0, 364.0, material="network")
+    nrows = {}
+    for e in sorted({0.1, 0.2} | {0.15 + s * VW_H for s in (-1, -0.5, 0, 0.5, 1)}):
+        d = cn.dimensional(e, cn.advance(e))
+        d["V_quad"] = volume_by_quadrature(cn)
+        nrows[e] = d
+    for e in (0.1, 0.15, 0.2):
+        d = nrows[e]
+        ev, ed = d["V_quad"] / d["V_target"] - 1.0, d["F_eq"] / d["F"] - 1.0
+        mt = min(d["min_T_disc"], d["min_T_free"])
+        Fnh = curves[364.0][1][e]["F"]
+        print(f"  eps {e:.2f}: F {d['F']:.6g} nN (NH {Fnh:.6g}, {d['F'] / Fnh - 1:+.2%}), "
+              f"V err {ev:+.1e}, F_eq err {ed:+.1e}, min T {mt:.2e}, a_slack {d['a_slack']:.3f}")
+        T.check(f"(h) network eps {e:.2f}: volume, equatorial balance, no compression",
+                abs(ev) < 1e-6 and abs(ed) < 1e-6 and mt > -1e-6 * G_T0,
+                f"{ev:+.1e} {ed:+.1e} {mt:.1e}")
+        # same equibiaxial law, stiffer in shear: the flattened wall needs more force
+        T.check(f"(h) network eps {e:.2f}: stiffer than Neo-Hookean", d["F"] > Fnh,
+                f"{d['F'] / Fnh - 1:+.2%}")
+    print(f"  slack centre from eps {cn.eps_slack:.5f} (NH {curves[364.0][0].eps_slack:.5f})")
+    e = 0.15
+    est = []
+    for h in (VW_H, 0.5 * VW_H):
+        lo, hi = nrows[e - h], nrows[e + h]
+        est.append((hi["U"] - lo["U"] - nrows[e]["p"] * (hi["V"] - lo["V"]))
+                   / (2.0 * lo["R_inflated"] * 2.0 * h))
+    Fw = (4.0 * est[1] - est[0]) / 3.0
+    err = Fw / nrows[e]["F"] - 1.0
+    print(f"  eps 0.15 (slack): p pi a^2 {nrows[e]['F']:.8g}, virtual work {Fw:.8g} ({err:+.1e}): "
+          f"the slack edge lam1 = lam2 = 1 is the network energy's stationarity condition too")
+    T.check("(h) network eps 0.15: virtual work", abs(err) < 2e-5, f"{err:+.1e}")
+
     cpu = time.process_time() - t_start
     print(f"\nCPU time {cpu:.1f} s")
     T.check("runs in under 60 s of CPU", cpu < 60.0, f"{cpu:.1f} s")

@@ -8,12 +8,17 @@ carries no compression, so where the classical solution would compress the centr
 disc the solver uses tension-field theory: a slack (wrinkled) disc inside a taut ring.
 The equations and their derivation are in docs/membrane.rst.
 
+material="network" replaces the Neo-Hookean sheet by the affine, orientation-averaged energy of
+the model's tether network (Eq. 19 bonds): same equibiaxial law, 1.5x the shear modulus.
+
 Nondimensional internally: lengths / R0, tensions / (G t0), pressure p R0 / (G t0).
 
 Usage:
-  membrane.py --G 8e5 --t0 0.126 --R0 30 --P 364 --eps-max 0.2 --n 21 [--K 7e4] -o curve.csv
+  membrane.py --G 8e5 --t0 0.126 --R0 30 --P 364 --eps-max 0.2 --n 21 [--K 7e4]
+              [--material neohookean|network] -o curve.csv
 As a module:
-  membrane.compress_curve(G_t0, R0, P_turgor, strains, bulk_modulus=None) -> list of dicts
+  membrane.compress_curve(G_t0, R0, P_turgor, strains, bulk_modulus=None,
+                          material="neohookean") -> list of dicts
 """
 import argparse
 import math
@@ -49,9 +54,53 @@ def dtension1(l1, l2):
     return 1.0 / l2 + 3.0 * j3 / l1, -l1 / l2 ** 2 + 3.0 * j3 / l2
 
 
+def energy_density(l1, l2):
+    """Strain energy per reference area per G t0 of the Neo-Hookean sheet."""
+    return 0.5 * (l1 * l1 + l2 * l2 + (l1 * l2) ** -2 - 3.0)
+
+
+# The tether network (src/cell_physics.h tether_energy, Eq. 19): a bond of rest length l0 at
+# stretch lam stores U = (G t0 l0^2 / sqrt3) u(lam), u = lam^2/2 - 3/4 + lam^-4/4, so that
+# dU/dl = (G t0 l0 / sqrt3)(lam - lam^-5). A triangulated net has 3 bonds per node and
+# sqrt3/2 l0^2 of area per node: W = 3 U / (sqrt3/2 l0^2) = 2 G t0 <u>. Affine deformation
+# with bonds in all directions (the geodesic net): lam(phi)^2 = l1^2 cos^2 phi + l2^2 sin^2 phi,
+# averaged uniformly over phi, <lam^2> = (l1^2 + l2^2)/2 and
+# <lam^-4> = (l1^2 + l2^2) / (2 l1^3 l2^3)
+# [the mean of 1/(a cos^2 + b sin^2)^2 over phi is (a + b)/(2 (ab)^1.5)].
+# W / (G t0) = (l1^2 + l2^2)/2 - 3/2 + (l1^2 + l2^2)/(4 (l1 l2)^3): equibiaxially
+# l^2 - 3/2 + l^-4/2, exactly the Neo-Hookean sheet's; in shear 1.5 G t0 against G t0.
+
+def network_energy_density(l1, l2):
+    """Strain energy per reference area per G t0 of the orientation-averaged tether network."""
+    s = l1 * l1 + l2 * l2
+    return 0.5 * s - 1.5 + 0.25 * s * (l1 * l2) ** -3
+
+
+def network_tensions(l1, l2):
+    """True tensions T1, T2 per G t0 of the tether network, T_i = (dW/dl_i) / l_j."""
+    a, b = l1 * l1, l2 * l2
+    ab = a * b
+    return (l1 / l2 - (0.25 / b + 0.75 / a) / ab,
+            l2 / l1 - (0.25 / a + 0.75 / b) / ab)
+
+
+def network_dtension1(l1, l2):
+    """dT1/dl1 and dT1/dl2 of the tether network (per G t0)."""
+    a, b = l1 * l1, l2 * l2
+    return (1.0 / l2 + (0.5 / b + 3.0 / a) / (l1 * a * b),
+            -l1 / b + (1.0 / b + 1.5 / a) / (l2 * a * b))
+
+
+# (T1, T2), (dT1/dl1, dT1/dl2), W: all per G t0. Both vanish only at l1 = l2 = 1 (W >= 0, a mean
+# of bond energies u >= 0 that are zero only at lam = 1), which the slack edge relies on.
+MATERIALS = {"neohookean": (tensions, dtension1, energy_density),
+             "network": (network_tensions, network_dtension1, network_energy_density)}
+
+
 def young_laplace_stretch(p_hat):
     """Stretch lam of the free inflated sphere: p R / 2 = G t0 (1 - lam^-6), R = lam R0, with
-    p_hat = p R0 / (G t0). The pressure peaks at lam = 7^(1/7) (inflation instability)."""
+    p_hat = p R0 / (G t0). The pressure peaks at lam = 7^(1/7) (inflation instability).
+    The same law for both materials: their equibiaxial energies are identical."""
     lam_max = 7.0 ** (1.0 / 7.0)
     if p_hat <= 0.0:
         return 1.0
@@ -71,23 +120,23 @@ def young_laplace_stretch(p_hat):
 #   T1 dpsi/ds + T2 sin(psi) / r = p               (normal; on the plate the plate takes p)
 
 
-def meridian_slopes(theta, l2, l1, cpsi):
+def meridian_slopes(theta, l2, l1, cpsi, law=MATERIALS["neohookean"]):
     """d l2/dtheta and d l1/dtheta from the geometry of r = l2 sin(theta) and the meridional
     equilibrium d(r T1)/dtheta = T2 dr/dtheta written for l1 (chain rule through T1(l1, l2))."""
     s, c = np.sin(theta), np.cos(theta)
     r = s * l2
     drdth = l1 * cpsi
-    T1, T2 = tensions(l1, l2)
-    a11, a12 = dtension1(l1, l2)
+    T1, T2 = law[0](l1, l2)
+    a11, a12 = law[1](l1, l2)
     dl2 = (drdth - l2 * c) / s
     dl1 = ((T2 - T1) * drdth / r - a12 * dl2) / a11
     return dl2, dl1
 
 
-def normal_slope(theta, l2, l1, psi, p):
+def normal_slope(theta, l2, l1, psi, p, law=MATERIALS["neohookean"]):
     """d psi/dtheta of the free (unsupported) meridian: curvature from the normal balance."""
     r = np.sin(theta) * l2
-    T1, T2 = tensions(l1, l2)
+    T1, T2 = law[0](l1, l2)
     return l1 * (p - T2 * np.sin(psi) / r) / T1
 
 
@@ -100,8 +149,9 @@ class Problem:
     classical: taut to the pole (l1 = l2 there); slack: theta_s is a free boundary where the
     sheet is unstretched (l1 = l2 = 1), see docs/membrane.rst for the corner condition."""
 
-    def __init__(self, lam, h, p0, K_hat, slack):
+    def __init__(self, lam, h, p0, K_hat, slack, material="neohookean"):
         self.lam, self.h, self.p0, self.K, self.slack = lam, h, p0, K_hat, slack
+        self.material, self.law = material, MATERIALS[material]
         self.V0 = 4.0 / 3.0 * math.pi * lam ** 3
 
     def inner(self, k):
@@ -115,10 +165,10 @@ class Problem:
         ths = self.inner(k)
         thA = ths + (thc - ths) * tau
         thB = thc + (HALF_PI - thc) * tau
-        dl2A, dl1A = meridian_slopes(thA, y[0], y[1], 1.0)
+        dl2A, dl1A = meridian_slopes(thA, y[0], y[1], 1.0, self.law)
         psi = y[4]
-        dl2B, dl1B = meridian_slopes(thB, y[2], y[3], np.cos(psi))
-        dpsi = normal_slope(thB, y[2], y[3], psi, p)
+        dl2B, dl1B = meridian_slopes(thB, y[2], y[3], np.cos(psi), self.law)
+        dpsi = normal_slope(thB, y[2], y[3], psi, p, self.law)
         rB = np.sin(thB) * y[2]
         dz = -y[3] * np.sin(psi)
         dV = -math.pi * rB ** 2 * dz
@@ -161,11 +211,6 @@ def solve(prob, tau, y, k, tol=TOL):
     return sol if sol.status == 0 and np.all(np.isfinite(sol.y)) else None
 
 
-def energy_density(l1, l2):
-    """Strain energy per reference area per G t0 of the Neo-Hookean sheet."""
-    return 0.5 * (l1 * l1 + l2 * l2 + (l1 * l2) ** -2 - 3.0)
-
-
 def strain_energy(prob, sol, refine=8):
     """Strain energy of the whole wall (both halves), per G t0 R0^2; the slack disc stores none.
     Simpson on the collocation mesh refined `refine` times (the interpolant is C1 cubic)."""
@@ -176,10 +221,11 @@ def strain_energy(prob, sol, refine=8):
     Y = sol.sol(tau)
     thA = ths + (thc - ths) * tau
     thB = thc + (HALF_PI - thc) * tau
-    UA = simpson(energy_density(Y[1], Y[0]) * np.sin(thA), x=thA)
-    UB = simpson(energy_density(Y[3], Y[2]) * np.sin(thB), x=thB)
+    W = prob.law[2]
+    UA = simpson(W(Y[1], Y[0]) * np.sin(thA), x=thA)
+    UB = simpson(W(Y[3], Y[2]) * np.sin(thB), x=thB)
     # classical branch: the tiny cap inside POLE * theta_c is at the pole's stretch
-    U0 = 0.0 if prob.slack else energy_density(Y[1, 0], Y[0, 0]) * (1.0 - math.cos(ths))
+    U0 = 0.0 if prob.slack else W(Y[1, 0], Y[0, 0]) * (1.0 - math.cos(ths))
     return 2.0 * 2.0 * math.pi * (UA + UB + U0)
 
 
@@ -190,11 +236,12 @@ def describe(prob, sol, neval=4001):
     y0, y1 = sol.sol(0.0), sol.sol(1.0)
     a = math.sin(thc) * y0[2]
     r_eq = y1[2]
-    T1_eq = tensions(y1[3], y1[2])[0]
+    tens = prob.law[0]
+    T1_eq = tens(y1[3], y1[2])[0]
     tau = np.linspace(0.0, 1.0, neval)
     Y = sol.sol(tau)
-    TA = tensions(Y[1], Y[0])
-    TB = tensions(Y[3], Y[2])
+    TA = tens(Y[1], Y[0])
+    TB = tens(Y[3], Y[2])
     return dict(p=p, a=a, a_slack=math.sin(ths) * y0[0] if prob.slack else 0.0, r_eq=r_eq,
                 V=2.0 * y1[6], V_target=prob.target_volume(p), F=p * math.pi * a * a,
                 F_eq=p * math.pi * r_eq ** 2 - 2.0 * math.pi * r_eq * T1_eq, T1_eq=T1_eq,
@@ -210,8 +257,11 @@ class Curve:
     advance(eps) returns the nondimensional state, dimensional(eps, state) the caller's units."""
 
     def __init__(self, G_t0, R0, P_turgor, bulk_modulus=None, tol=TOL, step=STEP,
-                 tension_field=True):
+                 tension_field=True, material="neohookean"):
+        if material not in MATERIALS:
+            raise ValueError(f"material must be one of {', '.join(MATERIALS)}")
         self.Gt, self.R0, self.tol, self.step = G_t0, R0, tol, step
+        self.material = material
         # tension_field=False keeps the classical branch with its compressed pole (for
         # comparison only: a membrane cannot carry that compression)
         self.tension_field = tension_field
@@ -223,7 +273,7 @@ class Curve:
         self.eps_slack = None      # strain at which the slack centre appears (None: not yet)
 
     def problem(self, eps, slack):
-        return Problem(self.lam, self.lam * (1.0 - eps), self.p0, self.K, slack)
+        return Problem(self.lam, self.lam * (1.0 - eps), self.p0, self.K, slack, self.material)
 
     def _attempt(self, eps, slack, guess):
         prob = self.problem(eps, slack)
@@ -326,19 +376,21 @@ class Curve:
                     V=4.0 / 3.0 * math.pi * R ** 3, V_target=4.0 / 3.0 * math.pi * R ** 3,
                     F_eq=0.0, T1_eq=T0, min_T_disc=T0, min_T_free=T0, lam_inner=self.lam,
                     theta_c=0.0, theta_s=0.0, nodes=0, slack=False, R_inflated=R,
-                    U=4.0 * math.pi * energy_density(self.lam, self.lam) * Tn * L * L)
+                    U=4.0 * math.pi * MATERIALS[self.material][2](self.lam, self.lam) * Tn * L * L)
 
 
-def compress_curve(G_t0, R0, P_turgor, strains, bulk_modulus=None, tol=TOL, step=STEP):
+def compress_curve(G_t0, R0, P_turgor, strains, bulk_modulus=None, tol=TOL, step=STEP,
+                   material="neohookean"):
     """Plate force-strain curve of the inflated membrane.
 
     G_t0: wall shear modulus times thickness; R0: unstressed radius; P_turgor: pressure at zero
     load (the contents' volume is then fixed, or follows V = V0 (1 - (p - P_turgor)/K) with
-    K = bulk_modulus); strains: increasing eps = DeltaX / (2 R_inflated) >= 0.
+    K = bulk_modulus); strains: increasing eps = DeltaX / (2 R_inflated) >= 0; material:
+    "neohookean" (the sheet) or "network" (the orientation-averaged tether network).
     Returns one dict per strain with 'eps','F','p','a','a_slack','r_eq','V' (units of the inputs:
     kPa, um, kPa*um -> nN, um^3) plus check quantities ('F_eq' = p pi r_eq^2 - 2 pi r_eq T1_eq,
     'V_target', 'min_T_disc', 'min_T_free', 'lam_inner', 'slack', 'eps_slack', ...)."""
-    c = Curve(G_t0, R0, P_turgor, bulk_modulus, tol, step)
+    c = Curve(G_t0, R0, P_turgor, bulk_modulus, tol, step, material=material)
     out = []
     for eps in strains:
         if eps < 0.0:
@@ -359,12 +411,15 @@ def main(argv=None):
     ap.add_argument("--n", type=int, default=21, help="strains 0..eps-max")
     ap.add_argument("--K", type=float, default=None, help="bulk modulus of the contents (kPa)")
     ap.add_argument("--tol", type=float, default=TOL)
+    ap.add_argument("--material", choices=sorted(MATERIALS), default="neohookean",
+                    help="wall law: Neo-Hookean sheet or orientation-averaged tether network")
     ap.add_argument("-o", "--output", default="-")
     a = ap.parse_args(argv)
     strains = np.linspace(0.0, a.eps_max, a.n)
-    rows = compress_curve(a.G * a.t0, a.R0, a.P, strains, a.K, tol=a.tol)
+    rows = compress_curve(a.G * a.t0, a.R0, a.P, strains, a.K, tol=a.tol, material=a.material)
     es = rows[-1]["eps_slack"]
-    print(f"membrane.py: G {a.G:g} t0 {a.t0:g} R0 {a.R0:g} P {a.P:g} K {a.K}: R_inflated "
+    print(f"membrane.py ({a.material}): G {a.G:g} t0 {a.t0:g} R0 {a.R0:g} P {a.P:g} K {a.K}: "
+          f"R_inflated "
           f"{rows[0]['R_inflated']:.6f}, slack centre from eps "
           f"{'(none up to eps-max)' if es is None else f'{es:.5f}'}", file=sys.stderr)
     f = sys.stdout if a.output == "-" else open(a.output, "w")
