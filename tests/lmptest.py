@@ -66,6 +66,35 @@ fix             integrate all nve
 """
 
 
+# A periodic box of SPH fluid (type 1) and fixed SPH wall particles (type 2) on a lattice, for
+# the fluid tests without a cell: the lines before the box is made, and those after its atoms are.
+SPH_BOX_HEAD = """
+units           micro
+atom_style      molecular
+atom_modify     map array
+boundary        p p p
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+"""
+
+
+def sph_box_fluid(rho0, c, p0, mu, s, dx):
+    """Input lines that make the atoms of an SPH_BOX_HEAD box fluid at rest (mass rho0 dx^3,
+    density rho0) with pair cell/sph and fix cell/fluid (no osmosis); walls (type 2) unintegrated."""
+    return f"""
+set             type 1*2 mol 1
+set             type 1*2 mass {rho0 * dx ** 3}
+set             type 1*2 d_rho {rho0}
+group           fluid type 1
+pair_style      cell/sph
+pair_coeff      1 1 {rho0} {c} {p0} {mu} {s}
+pair_coeff      2 2 {rho0} {c} {p0} {mu} {s}
+comm_modify     vel yes
+neighbor        0.3 bin
+fix             nve fluid nve
+fix             dens fluid cell/fluid Pi 0 Lp 0
+"""
+
+
 def load(path):
     """Numeric table of a fix ave/time or print file (comment lines '#')."""
     return np.loadtxt(path, comments="#", ndmin=2)

@@ -71,26 +71,7 @@ def tait(rho):
     return P0 + RHO0 * C * C / 7.0 * ((rho / RHO0) ** 7 - 1.0)
 
 
-HEAD = """
-units           micro
-atom_style      molecular
-atom_modify     map array
-boundary        p p p
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
-"""
-
-TAIL = f"""
-set             type 1*2 mol 1
-set             type 1*2 mass {RHO0 * DX ** 3}
-set             type 1*2 d_rho {RHO0}
-group           fluid type 1
-pair_style      cell/sph
-pair_coeff      1 1 {RHO0} {C} {P0} {MU} {S}
-pair_coeff      2 2 {RHO0} {C} {P0} {MU} {S}
-comm_modify     vel yes
-neighbor        0.3 bin
-fix             nve fluid nve
-fix             dens fluid cell/fluid Pi 0 Lp 0
+TAIL = T.sph_box_fluid(RHO0, C, P0, MU, S, DX) + f"""
 timestep        {DT}
 variable        vmag atom sqrt(vx*vx+vy*vy+vz*vz)
 variable        drho atom abs(d_rho-{RHO0})
@@ -109,7 +90,7 @@ thermo          500
 run             {NSTEPS}
 """
 
-PERIODIC = HEAD + f"""
+PERIODIC = T.SPH_BOX_HEAD + f"""
 lattice         sc {DX} origin 0.5 0.5 0.5
 region          box block 0 8 0 8 0 8 units box
 create_box      2 box
@@ -118,7 +99,7 @@ create_atoms    1 box
 
 NW, LC = 3, 12     # wall layers per wall, channel width (fluid layers)
 TOL_MODEL = 1e-8
-CHANNEL = HEAD + f"""
+CHANNEL = T.SPH_BOX_HEAD + f"""
 region          box block 0 8 {-NW * DX} {LC * DX + NW * DX} 0 8 units box
 create_box      2 box
 lattice         sc {DX} origin 0.5 0.5 0.5

@@ -119,12 +119,7 @@ fix             mvp{j} wp{j} move variable v_zero v_zero v_zero v_vp{j} v_zero v
 """
             mirror += lo
         mirror = "variable        zero equal 0.0\n" + mirror
-    inp = f"""
-units           micro
-atom_style      molecular
-atom_modify     map array
-boundary        p p p
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+    inp = T.SPH_BOX_HEAD + f"""
 region          box block 0 {NXZ} {-NW * DX} {L + NW * DX} 0 {NXZ} units box
 create_box      2 box
 lattice         sc {DX} origin 0.5 0.5 0.5
@@ -132,17 +127,7 @@ region          fl block INF INF 0 {L} INF INF units box
 region          wall block INF INF 0 {L} INF INF side out units box
 create_atoms    1 region fl
 create_atoms    2 region wall
-set             type 1*2 mol 1
-set             type 1*2 mass {RHO0 * DX ** 3}
-set             type 1*2 d_rho {RHO0}
-group           fluid type 1
-pair_style      cell/sph
-pair_coeff      1 1 {RHO0} {C} {P0} {MU} {S}
-pair_coeff      2 2 {RHO0} {C} {P0} {MU} {S}
-comm_modify     vel yes
-neighbor        0.3 bin
-fix             nve fluid nve
-fix             dens fluid cell/fluid Pi 0 Lp 0
+""" + T.sph_box_fluid(RHO0, C, P0, MU, S, DX) + f"""
 {mirror}
 variable        fx atom mass*{G}
 fix             push fluid addforce v_fx 0.0 0.0
