@@ -185,6 +185,23 @@ class Patch : public Lmp {
     const int i = lmp->atom->map(2), j = lmp->atom->map(3);
     return std::sqrt(std::pow(x[i][0] - x[j][0], 2) + std::pow(x[i][1] - x[j][1], 2));
   }
+  // the state after tether 2-3 broke: it is gone with both triangles, 2 and 3 are no longer 1-2
+  // neighbours (2 and 1 still are), one broken tether counted, at both of its nodes
+  void expect_23_broken()
+  {
+    EXPECT_EQ(lmp->atom->nbonds, 4);
+    EXPECT_EQ(lmp->atom->nangles, 0);
+    EXPECT_FALSE(special_has(2, 3));
+    EXPECT_FALSE(special_has(3, 2));
+    EXPECT_TRUE(special_has(2, 1));
+    EXPECT_EQ(angle_types_on(1) + angle_types_on(2) + angle_types_on(3) + angle_types_on(4), 0);
+    auto *fix = lmp->modify->get_fix_by_id("cell_broken");
+    ASSERT_NE(fix, nullptr);
+    EXPECT_EQ(fix->compute_scalar(), 1.0);
+    EXPECT_EQ(fix->vector_atom[lmp->atom->map(2)], 1.0);
+    EXPECT_EQ(fix->vector_atom[lmp->atom->map(3)], 1.0);
+    EXPECT_EQ(fix->vector_atom[lmp->atom->map(1)], 0.0);
+  }
   static bool has_dist(LAMMPS_NS::Compute *c, double r)
   {
     for (int n = 0; n < c->size_local_rows; n++)
@@ -197,18 +214,8 @@ TEST_F(Patch, BrokenTetherUpdatesTopology)
 {
   build("1 8e5 0.126 0.0 lamf 1.05");
   cmd("run 0");
-  // broken in the setup force call: bond removed, triangles off, special lists updated
-  EXPECT_EQ(lmp->atom->nbonds, 4);
-  EXPECT_EQ(lmp->atom->nangles, 0);
-  EXPECT_FALSE(special_has(2, 3));
-  EXPECT_FALSE(special_has(3, 2));
-  EXPECT_TRUE(special_has(2, 1));
-  EXPECT_EQ(angle_types_on(2) + angle_types_on(4) + angle_types_on(1) + angle_types_on(3), 0);
-  auto *fix = lmp->modify->get_fix_by_id("cell_broken");
-  ASSERT_NE(fix, nullptr);
-  EXPECT_EQ(fix->compute_scalar(), 1.0);
-  EXPECT_EQ(fix->vector_atom[lmp->atom->map(2)], 1.0);
-  EXPECT_EQ(fix->vector_atom[lmp->atom->map(1)], 0.0);
+  // broken in the setup force call: bond removed, triangles gone, special lists updated
+  expect_23_broken();
   // the next step re-neighbors: 2 and 3 are now an ordinary pair within the 8-4 cutoff
   cmd("run 1");
   EXPECT_TRUE(pair23_listed()) << "broken pair 2-3 missing from the neighbor list";
@@ -220,14 +227,7 @@ TEST_F(Patch, BrokenTetherUpdatesTopology)
   cmds({"read_restart patch.restart", "fix ref all property/atom d2_cellref 3 ghost yes",
         "special_bonds lj 0 1 1", "pair_style cell/lj84", "pair_coeff 1 1 10.0 3.5",
         "angle_coeff *", "compute pl all pair/local dist", "run 0"});
-  EXPECT_EQ(lmp->atom->nbonds, 4);
-  EXPECT_FALSE(special_has(2, 3));
-  EXPECT_TRUE(special_has(2, 1));
-  EXPECT_EQ(angle_types_on(2) + angle_types_on(4) + angle_types_on(1) + angle_types_on(3), 0);
-  fix = lmp->modify->get_fix_by_id("cell_broken");
-  ASSERT_NE(fix, nullptr);
-  EXPECT_EQ(fix->compute_scalar(), 1.0);
-  EXPECT_EQ(fix->vector_atom[lmp->atom->map(3)], 1.0);
+  expect_23_broken();
   EXPECT_TRUE(pair23_listed());
   std::remove("patch.restart");
 }
