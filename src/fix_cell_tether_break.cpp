@@ -19,7 +19,7 @@
    -- after read_restart or special_bonds -- equal to the one updated here,
    and write_data writes the torn wall as it is.
    The per-atom count of broken tethers travels with the atoms and is
-   written to restart files; the global scalar is the total.
+   written to restart files; the global scalar, the total, is half their sum.
 ------------------------------------------------------------------------- */
 
 #include "fix_cell_tether_break.h"
@@ -34,7 +34,6 @@
 #include "update.h"
 
 #include <algorithm>
-#include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -42,10 +41,9 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixCellTetherBreak::FixCellTetherBreak(LAMMPS *_lmp, int narg, char **arg) :
-    Fix(_lmp, narg, arg), nbroken(nullptr), total(0)
+    Fix(_lmp, narg, arg), nbroken(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix CELL_TETHER_BREAK command: expected no arguments");
-  restart_global = 1;
   restart_peratom = 1;
   scalar_flag = 1;
   global_freq = 1;
@@ -76,7 +74,11 @@ int FixCellTetherBreak::setmask()
 
 double FixCellTetherBreak::compute_scalar()
 {
-  return (double) total;
+  // every broken tether is counted at both of its nodes
+  double mine = 0.0, all = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) mine += nbroken[i];
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+  return 0.5 * all;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -151,7 +153,6 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
         anglelist[n][3] = 0;
   }
 
-  total += (bigint) pairs.size();
   // the pair is no longer excluded: rebuild the neighbor lists before the next force call
   next_reneighbor = update->ntimestep + 1;
 }
@@ -182,20 +183,6 @@ int FixCellTetherBreak::unpack_exchange(int nlocal, double *buf)
 }
 
 /* ---------------------------------------------------------------------- */
-
-void FixCellTetherBreak::write_restart(FILE *fp)
-{
-  if (comm->me == 0) {
-    const int size = sizeof(bigint);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&total, sizeof(bigint), 1, fp);
-  }
-}
-
-void FixCellTetherBreak::restart(char *buf)
-{
-  memcpy(&total, buf, sizeof(bigint));
-}
 
 int FixCellTetherBreak::pack_restart(int i, double *buf)
 {

@@ -36,8 +36,6 @@ class FixCellTetherBreak : public Fix {
   void copy_arrays(int, int, int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
-  void write_restart(FILE *) override;
-  void restart(char *) override;
   int pack_restart(int, double *) override;
   void unpack_restart(int, int) override;
   int maxsize_restart() override;
@@ -45,7 +43,6 @@ class FixCellTetherBreak : public Fix {
 
  protected:
   double *nbroken;    // per atom: broken tethers that ended at this node
-  bigint total;       // broken tethers in the whole system since the fix was created
 };
 
 }    // namespace LAMMPS_NS
