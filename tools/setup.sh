@@ -53,7 +53,8 @@ SRC
     fi
     log "downloading LAMMPS source package $DEB_VERSION"
     (cd "$CACHE/src" && apt-get source --download-only --tar-only "lammps=$DEB_VERSION" >/dev/null)
-    tarball=$(ls "$CACHE"/src/lammps_*.orig.tar.* | head -n 1)
+    tarballs=("$CACHE"/src/lammps_*.orig.tar.*)
+    tarball=${tarballs[0]}
     tmp=$CACHE/src/unpack.$$
     mkdir -p "$tmp" && tar -xf "$tarball" -C "$tmp"
     mv "$tmp"/* "$LAMMPS_SRC" && rmdir "$tmp"
@@ -79,10 +80,13 @@ if [ -z "${LAMMPS_BUILD:-}" ]; then
     log "reusing cached LAMMPS build $LAMMPS_BUILD"
   fi
 fi
-# The lmp we use must resolve its own liblammps, not some other one on the system.
-if ! ldd "$LAMMPS_BUILD/lmp" | grep -q "$LAMMPS_BUILD/liblammps"; then
+# The lmp we use must resolve its own liblammps, not some other one on the system. (ldd's output
+# is read whole first: `ldd | grep -q` under pipefail fails at random when grep's early exit
+# cuts ldd off with SIGPIPE.)
+lmp_libs=$(ldd "$LAMMPS_BUILD/lmp")
+if [[ "$lmp_libs" != *"$LAMMPS_BUILD/liblammps"* ]]; then
   echo "error: $LAMMPS_BUILD/lmp does not load $LAMMPS_BUILD/liblammps.so:" >&2
-  ldd "$LAMMPS_BUILD/lmp" | grep -i lammps >&2
+  grep -i lammps <<<"$lmp_libs" >&2
   exit 1
 fi
 
