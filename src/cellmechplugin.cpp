@@ -13,6 +13,7 @@
 #include "version.h"
 
 #include "bond_cell_tether.h"
+#include "compute_cell_contacts.h"
 #include "compute_cell_props.h"
 #include "compute_cell_shear_atom.h"
 #include "fix_cell_fluid.h"
@@ -82,6 +83,9 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
        &create<Compute, ComputeCellProps>},
       {"compute", "cell/shear/atom", "cellmech per-particle protoplasm shear stress (Eqs. 24-26)",
        nullptr, &create<Compute, ComputeCellShearAtom>},
+      {"compute", "cell/contacts",
+       "cellmech per-cell-pair lamella bonds, contact force and area of a tissue", nullptr,
+       &create<Compute, ComputeCellContacts>},
   };
   for (auto &st : styles) {
     plugin.style = st.style;

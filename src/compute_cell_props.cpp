@@ -11,6 +11,11 @@
        cell centre with the given normal (Eq. 23), positive in tension
      9 fluid particles outside their own wall (winding number of the
        closed wall mesh)  10-12 cell centre (mean of the wall nodes)
+     13 broken tethers (wall rupture)
+     14 intact middle-lamella bonds to other cells, 15 their glued area
+     16 debonded lamella bonds, 17 their area (from fix cell_debonded)
+   Bonds between two cells (molecule IDs) are lamella bonds: they count in
+   14-17 only, never in the wall's stretch or equatorial force.
    Triangles are the angles of the topology, counted once (newton_bond on).
    Fluid are atoms of the types that pair cell/sph treats as fluid.
 ------------------------------------------------------------------------- */
@@ -24,6 +29,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "fix_cell_tether_break.h"
 #include "force.h"
 #include "memory.h"
@@ -42,7 +48,7 @@ using namespace CellPhysics;
 static constexpr double BIG = 1.0e300;
 
 ComputeCellProps::ComputeCellProps(LAMMPS *_lmp, int narg, char **arg) :
-    Compute(_lmp, narg, arg), leaks(1), ncells(0), sph(nullptr), tether(nullptr)
+    Compute(_lmp, narg, arg), leaks(1), ncells(0), sph(nullptr), tether(nullptr), ialam(-1)
 {
   normal[0] = normal[1] = 0.0;
   normal[2] = 1.0;
@@ -93,6 +99,9 @@ void ComputeCellProps::init()
     error->all(FLERR,
                "Compute cell/props requires an angle style (angle_style zero nocoeff) so "
                "that LAMMPS lists the wall triangles");
+  int flag, cols;
+  ialam = atom->find_custom("alam", flag, cols);
+  if (ialam >= 0 && (flag != 1 || cols != 0)) ialam = -1;
 }
 
 void ComputeCellProps::allocate(int n)
@@ -108,8 +117,10 @@ void ComputeCellProps::allocate(int n)
    centre of each cell: mean of its unwrapped wall nodes (atoms in bonds)
 ------------------------------------------------------------------------- */
 
-void ComputeCellProps::centres(std::vector<double> &c)
+void ComputeCellProps::wall_centres(LAMMPS *lmp, int ncells, const PairCellSPH *sph,
+                                    std::vector<double> &c)
 {
+  Atom *atom = lmp->atom;
   std::vector<double> local(4 * (ncells + 1), 0.0), all(4 * (ncells + 1));
   double **x = atom->x;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -118,11 +129,11 @@ void ComputeCellProps::centres(std::vector<double> &c)
     if (m < 1 || m > ncells || (sph && sph->is_fluid(atom->type[i])) || atom->nspecial[i][0] == 0)
       continue;
     double xu[3];
-    domain->unmap(x[i], atom->image[i], xu);
+    lmp->domain->unmap(x[i], atom->image[i], xu);
     for (int d = 0; d < 3; d++) local[4 * m + d] += xu[d];
     local[4 * m + 3] += 1.0;
   }
-  MPI_Allreduce(local.data(), all.data(), 4 * (ncells + 1), MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(local.data(), all.data(), 4 * (ncells + 1), MPI_DOUBLE, MPI_SUM, lmp->world);
   c.assign(3 * (ncells + 1), 0.0);
   for (int m = 1; m <= ncells; m++)
     if (all[4 * m + 3] > 0)
@@ -141,11 +152,11 @@ void ComputeCellProps::compute_array()
   allocate((int) maxmol);
 
   std::vector<double> c;
-  centres(c);
+  wall_centres(lmp, ncells, sph, c);
 
   // sums per cell: volume, area, pressure, mass, nfluid, stretch sum, nbonds, feq, broken
-  // tethers | max stretch
-  const int NS = 9;
+  // tethers, lamella bonds, glued area | max stretch
+  const int NS = 11;
   std::vector<double> local(NS * (ncells + 1), 0.0), all(NS * (ncells + 1));
   std::vector<double> lmax_local(ncells + 1, 0.0), lmax_all(ncells + 1);
   double **x = atom->x;
@@ -202,6 +213,17 @@ void ComputeCellProps::compute_array()
     if (type <= 0) continue;
     const tagint m = molecule[i1];
     if (m < 1 || m > ncells) continue;
+    if (molecule[i2] != m) {
+      // a middle-lamella bond glues this cell to another: both cells count it and its area
+      const double *alam = ialam >= 0 ? atom->dvector[ialam] : nullptr;
+      const double area = alam ? 0.5 * (alam[i1] + alam[i2]) : 0.0;
+      for (const tagint mm : {m, molecule[i2]})
+        if (mm >= 1 && mm <= ncells) {
+          local[NS * mm + 9] += 1.0;
+          local[NS * mm + 10] += area;
+        }
+      continue;
+    }
     double del[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
     const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
     const double lam = sqrt(rsq) / tether->rest_length(i1, i2);
@@ -242,7 +264,22 @@ void ComputeCellProps::compute_array()
     row[ZC] = c[3 * m + 2];
     row[NLEAK] = 0.0;
     row[NBROKEN] = s[8];
+    row[NLAMELLA] = s[9];
+    row[GLUED_AREA] = s[10];
+    row[NDEBONDED] = row[DEBONDED_AREA] = 0.0;
   }
+
+  // debonded lamella: the per-cell-pair table of fix cell_debonded (identical on every rank;
+  // columns cell i, cell j, bonds, area, ...) counted for both cells of each pair
+  auto *debonded = modify->get_fix_by_id("cell_debonded");
+  if (debonded && debonded->array_flag)
+    for (int r = 0; r < debonded->size_array_rows; r++)
+      for (int side = 0; side < 2; side++) {
+        const int m = (int) debonded->compute_array(r, side);
+        if (m < 1 || m > ncells) continue;
+        array[m - 1][NDEBONDED] += debonded->compute_array(r, 2);
+        array[m - 1][DEBONDED_AREA] += debonded->compute_array(r, 3);
+      }
   if (leaks) count_leaks(c);
 }
 

@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    cellmech: per-cell observables (one row per molecule ID): volume, wall
    area, fluid pressure and mass, tether stretch, equatorial force (Eq. 23),
-   fluid count and fluid outside its own wall (leaks).
+   fluid count and fluid outside its own wall (leaks), broken tethers, and
+   in a tissue its middle lamella: bonds and area glued and debonded.
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS
@@ -35,6 +36,10 @@ class ComputeCellProps : public Compute {
     YC,
     ZC,
     NBROKEN,
+    NLAMELLA,
+    GLUED_AREA,
+    NDEBONDED,
+    DEBONDED_AREA,
     NCOL
   };
 
@@ -43,15 +48,20 @@ class ComputeCellProps : public Compute {
   void init() override;
   void compute_array() override;
 
+  // centre of each cell 1..ncells (mean of its unwrapped wall nodes) into c[3m..3m+2], the same
+  // on every rank; shared with compute cell/contacts
+  static void wall_centres(class LAMMPS *, int ncells, const class PairCellSPH *,
+                           std::vector<double> &c);
+
  protected:
   double normal[3];
   int leaks;    // 1: count fluid outside its wall (O(N_fluid x N_triangles) per call)
   int ncells;
   class PairCellSPH *sph;
   class BondCellTether *tether;
+  int ialam;    // per-atom lamella area d_alam (tissue), -1 without one
 
   void allocate(int);
-  void centres(std::vector<double> &);
   void count_leaks(const std::vector<double> &);
 };
 

@@ -9,7 +9,9 @@
    topology) as polygons:
      point data: id (atom ID), cell (molecule ID), displacement from the
                  reference (rest) position, broken (tethers the node has
-                 lost, bond style cell/tether with lamf)
+                 lost, bond style cell/tether with lamf: wall rupture),
+                 debonded (middle-lamella bonds to other cells the node
+                 has lost, bond style cell/lamella: cells coming apart)
      cell data:  cell (molecule ID), area_strain (area / rest area - 1),
                  max_stretch (largest l/l0 of its three tethers)
    A broken tether takes its triangles out of the wall: a crack is a hole.
@@ -92,6 +94,7 @@ void FixCellVTK::write()
 
   // points: id, molecule, unwrapped position, displacement from the reference, broken tethers
   auto *broken = modify->get_fix_by_id(FixCellTetherBreak::ID);
+  auto *debonded = modify->get_fix_by_id("cell_debonded");
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || atom->nspecial[i][0] == 0) continue;
@@ -99,7 +102,8 @@ void FixCellVTK::write()
     domain->unmap(x[i], atom->image[i], xu);
     mine.insert(mine.end(),
                 {(double) tag[i], (double) molecule[i], xu[0], xu[1], xu[2], xu[0] - ref[i][0],
-                 xu[1] - ref[i][1], xu[2] - ref[i][2], broken ? broken->vector_atom[i] : 0.0});
+                 xu[1] - ref[i][1], xu[2] - ref[i][2], broken ? broken->vector_atom[i] : 0.0,
+                 debonded ? debonded->vector_atom[i] : 0.0});
   }
   // triangles: three IDs, molecule, area strain, largest tether stretch (a broken tether has
   // taken its triangles out of the topology: the crack is a hole in the surface)
@@ -145,9 +149,10 @@ void FixCellVTK::write()
   std::vector<double> points = gather(mine), cells = gather(tris);
   if (comm->me != 0) return;
 
-  const int np = points.size() / 9, nt = cells.size() / 6;
+  const int NP = 10;    // values per point
+  const int np = points.size() / NP, nt = cells.size() / 6;
   std::unordered_map<tagint, int> index;
-  for (int p = 0; p < np; p++) index[(tagint) points[9 * p]] = p;
+  for (int p = 0; p < np; p++) index[(tagint) points[NP * p]] = p;
 
   const std::string file = fmt::format("{}.{}.vtk", prefix, update->ntimestep);
   FILE *fp = fopen(file.c_str(), "w");
@@ -156,8 +161,8 @@ void FixCellVTK::write()
              update->ntimestep);
   fmt::print(fp, "POINTS {} double\n", np);
   for (int p = 0; p < np; p++)
-    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[9 * p + 2], points[9 * p + 3],
-               points[9 * p + 4]);
+    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[NP * p + 2], points[NP * p + 3],
+               points[NP * p + 4]);
   int nkept = 0;
   std::string polys;
   for (int t = 0; t < nt; t++) {
@@ -170,15 +175,17 @@ void FixCellVTK::write()
   }
   fmt::print(fp, "POLYGONS {} {}\n{}", nkept, 4 * nkept, polys);
   fmt::print(fp, "POINT_DATA {}\nSCALARS id int 1\nLOOKUP_TABLE default\n", np);
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[9 * p]);
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[NP * p]);
   fmt::print(fp, "SCALARS cell int 1\nLOOKUP_TABLE default\n");
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[9 * p + 1]);
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[NP * p + 1]);
   fmt::print(fp, "VECTORS displacement double\n");
   for (int p = 0; p < np; p++)
-    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[9 * p + 5], points[9 * p + 6],
-               points[9 * p + 7]);
+    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[NP * p + 5], points[NP * p + 6],
+               points[NP * p + 7]);
   fmt::print(fp, "SCALARS broken int 1\nLOOKUP_TABLE default\n");
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (int) points[9 * p + 8]);
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (int) points[NP * p + 8]);
+  fmt::print(fp, "SCALARS debonded int 1\nLOOKUP_TABLE default\n");
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (int) points[NP * p + 9]);
   fmt::print(fp, "CELL_DATA {}\n", nkept);
   const char *names[3] = {"cell", "area_strain", "max_stretch"};
   for (int f = 0; f < 3; f++) {

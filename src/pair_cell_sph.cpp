@@ -6,6 +6,7 @@
                + sum_j m_j (mu_i + mu_j) / (rho_i rho_j) v_ij (1/r) dW/dr     (Eq. 5)
      P = P0 + rho0 c^2/7 [(rho/rho0)^7 - 1]                                   (Eq. 6)
      drho_i/dt (continuity part) = sum_j m_j v_ij . grad_i W_ij               (Eq. 7)
+   Particles of different molecule IDs (cells) do not interact.
    Per-particle mass is atom->rmass (osmosis changes it, fix cell/fluid);
    density and its rate live in fix property/atom as d_rho and d_drho.
    fix cell/fluid advances density and mass before the forces (using
@@ -88,6 +89,10 @@ template <class F> void PairCellSPH::for_each_fluid_pair(F &&f)
 {
   double **x = atom->x;
   int *type = atom->type;
+  // the protoplasm of one cell never meets another cell's through SPH, even where two particles
+  // are within the kernel's support across two walls (a tissue): the walls between them are
+  // closed, so no pressure, viscosity or density rate may cross. One molecule ID per cell.
+  const tagint *molecule = atom->molecule;
   int *ilist = list->ilist;
   int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
@@ -100,6 +105,7 @@ template <class F> void PairCellSPH::for_each_fluid_pair(F &&f)
       const int j = jlist[jj] & NEIGHMASK;
       const int jtype = type[j];
       if (!fluid[jtype]) continue;
+      if (molecule && molecule[i] != molecule[j]) continue;
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];
@@ -412,6 +418,10 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
                            double /*factor_lj*/, double &fforce)
 {
   // central (pressure) part only; the viscous force is not along r_ij
+  if (atom->molecule && atom->molecule[i] != atom->molecule[j]) {
+    fforce = 0.0;
+    return 0.0;
+  }
   const double *rho = atom->dvector[irho];
   const double r = sqrt(rsq);
   const double wr = kernel_dwdr(r, s[itype][jtype]) / r;

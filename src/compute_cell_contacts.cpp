@@ -1,0 +1,327 @@
+/* ----------------------------------------------------------------------
+   cellmech: compute cell/contacts
+
+   compute ID group cell/contacts
+
+   Global array, one row per pair of cells (molecule IDs i < j) that are
+   glued (intact middle-lamella bonds), were glued (debonded bonds) or
+   touch (wall nodes within the wall-wall contact distance r0 of pair
+   cell/lj84), in the order of (i, j):
+     1 cell i   2 cell j
+     3 intact lamella bonds   4 their area (d_alam, as bond cell/lamella)
+     5 debonded lamella bonds   6 their area (fix cell_debonded)
+     7 force of the lamella bonds on cell j from cell i, along the line
+       of the centres n = (c_j - c_i)/|c_j - c_i|: > 0 pushes the cells
+       apart (compression), < 0 holds them together (adhesion)
+     8 the same for the wall-wall contacts (8-4 repulsion and damping)
+     9 wall-node pairs in contact (not glued)
+    10 contact area: wall area of the nodes that touch the other cell,
+       glued or in contact, mean of the two sides (a third of each
+       node's current triangle areas)
+    11 distance between the two cell centres
+   Bonds between atoms of two cells are lamella bonds; the contacts are
+   the non-bonded wall-node pairs of pair cell/lj84's wall-wall cutoff.
+   The rows are summed over all ranks and are the same on every rank.
+------------------------------------------------------------------------- */
+
+#include "compute_cell_contacts.h"
+
+#include "atom.h"
+#include "bond.h"
+#include "cell_physics.h"
+#include "comm.h"
+#include "compute_cell_props.h"
+#include "error.h"
+#include "fix.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "pair_cell_sph.h"
+#include "update.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace {
+// per-pair sums before the reduction: bonds, glued area, lamella force (3), contact force (3),
+// contacts, contact area (both sides)
+constexpr int NSUM = 10;
+using Sums = std::array<double, NSUM>;
+}    // namespace
+
+ComputeCellContacts::ComputeCellContacts(LAMMPS *_lmp, int narg, char **arg) :
+    Compute(_lmp, narg, arg), nmax(0), node_area(nullptr), ialam(-1), nrows_max(0),
+    list(nullptr), sph(nullptr), contact(nullptr), contact_r0(nullptr)
+{
+  if (narg != 3)
+    error->all(FLERR,
+               "Illegal compute cell/contacts command: expected no arguments after the style, got "
+               "{}",
+               narg - 3);
+  if (!atom->molecule_flag)
+    error->all(FLERR,
+               "Compute cell/contacts requires molecule IDs (one per cell): atom_style molecular");
+  array_flag = 1;
+  size_array_cols = NCOL;
+  size_array_rows = 0;
+  size_array_rows_variable = 1;
+  extarray = 0;
+  comm_reverse = 1;
+}
+
+ComputeCellContacts::~ComputeCellContacts()
+{
+  memory->destroy(node_area);
+  memory->destroy(array);
+}
+
+void ComputeCellContacts::init()
+{
+  sph = dynamic_cast<PairCellSPH *>(force->pair_match("^cell/sph", 0));
+  contact = force->pair_match("^cell/lj84", 0);
+  if (!contact)
+    error->all(FLERR,
+               "Compute cell/contacts requires pair style cell/lj84 (the wall-wall contacts)");
+  int dim;
+  contact_r0 = (double **) contact->extract("r0", dim);
+  if (!force->newton_bond)
+    error->all(FLERR, "Compute cell/contacts requires newton_bond on (each bond and triangle once)");
+  if (!force->angle)
+    error->all(FLERR,
+               "Compute cell/contacts requires an angle style (angle_style zero nocoeff) so that "
+               "LAMMPS lists the wall triangles");
+  int flag, cols;
+  ialam = atom->find_custom("alam", flag, cols);
+  if (ialam >= 0 && (flag != 1 || cols != 0)) ialam = -1;
+  // built only when invoked; the pair cutoffs cover the wall-wall contact distance
+  neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+}
+
+void ComputeCellContacts::init_list(int /*id*/, NeighList *ptr)
+{
+  list = ptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeCellContacts::compute_array()
+{
+  invoked_array = update->ntimestep;
+
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  double **x = atom->x;
+  int *type = atom->type;
+  tagint *molecule = atom->molecule;
+
+  tagint maxmol_local = 0, maxmol = 0;
+  for (int i = 0; i < nlocal; i++) maxmol_local = MAX(maxmol_local, molecule[i]);
+  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  const int ncells = (int) maxmol;
+  std::vector<double> c;
+  ComputeCellProps::wall_centres(lmp, ncells, sph, c);
+
+  // each node's share of its triangles' current area, summed on the owner
+  if (atom->nmax > nmax) {
+    memory->destroy(node_area);
+    nmax = atom->nmax;
+    memory->create(node_area, nmax, "cell/contacts:node_area");
+  }
+  for (int i = 0; i < nall; i++) node_area[i] = 0.0;
+  int **anglelist = neighbor->anglelist;
+  for (int n = 0; n < neighbor->nanglelist; n++) {
+    if (anglelist[n][3] <= 0) continue;
+    const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
+    double u[3], w[3];
+    for (int d = 0; d < 3; d++) {
+      u[d] = x[b][d] - x[a][d];
+      w[d] = x[cc][d] - x[a][d];
+    }
+    const double third = CellPhysics::triangle_area(u, w) / 3.0;
+    node_area[a] += third;
+    node_area[b] += third;
+    node_area[cc] += third;
+  }
+  comm->reverse_comm(this);
+
+  std::map<std::pair<int, int>, Sums> local;
+  auto row = [&](tagint m1, tagint m2) -> Sums & {
+    auto key = std::make_pair((int) MIN(m1, m2), (int) MAX(m1, m2));
+    auto it = local.find(key);
+    if (it == local.end()) it = local.emplace(key, Sums{}).first;
+    return it->second;
+  };
+
+  // lamella bonds: bonds between two cells, each once (newton_bond on); force on the higher cell
+  const double *alam = ialam >= 0 ? atom->dvector[ialam] : nullptr;
+  int **bondlist = neighbor->bondlist;
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1], btype = bondlist[n][2];
+    if (btype <= 0 || molecule[i1] == molecule[i2]) continue;
+    Sums &s = row(molecule[i1], molecule[i2]);
+    s[0] += 1.0;
+    if (alam) s[1] += 0.5 * (alam[i1] + alam[i2]);
+    const double del[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
+    double fbond = 0.0;
+    force->bond->single(btype, del[0] * del[0] + del[1] * del[1] + del[2] * del[2], i1, i2, fbond);
+    const double sign = molecule[i1] > molecule[i2] ? 1.0 : -1.0;    // force on i1 is del fbond
+    for (int d = 0; d < 3; d++) s[2 + d] += sign * del[d] * fbond;
+  }
+
+  // wall-wall contacts between cells: the full list sees each node pair from both nodes; the
+  // force is taken on the node of the higher cell, the area on every node that touches
+  neighbor->build_one(list);
+  double *special_lj = force->special_lj;
+  int **nspecial = atom->nspecial;
+  tagint **special = atom->special;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int itype = type[i];
+    if (!(atom->mask[i] & groupbit) || nspecial[i][0] == 0 || (sph && sph->is_fluid(itype)))
+      continue;
+    std::set<tagint> touched;
+    // glued: the other cells among its 1-2 neighbours
+    for (int k = 0; k < nspecial[i][0]; k++) {
+      const int j = atom->map(special[i][k]);
+      if (j >= 0 && molecule[j] != molecule[i]) touched.insert(molecule[j]);
+    }
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      int j = jlist[jj];
+      const double factor_lj = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      const int jtype = type[j];
+      if (molecule[j] == molecule[i] || (sph && sph->is_fluid(jtype)) || nspecial[j][0] == 0)
+        continue;
+      const int lo = MIN(itype, jtype), hi = MAX(itype, jtype);
+      if (!contact->setflag[lo][hi]) continue;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      const double r0 = contact_r0[itype][jtype];
+      if (rsq >= r0 * r0 || factor_lj == 0.0) continue;
+      touched.insert(molecule[j]);
+      if (molecule[i] < molecule[j]) continue;
+      double fpair = 0.0;
+      contact->single(i, j, itype, jtype, rsq, 0.0, factor_lj, fpair);
+      Sums &s = row(molecule[i], molecule[j]);
+      for (int d = 0; d < 3; d++) s[5 + d] += del[d] * fpair;
+      s[8] += 1.0;
+    }
+    for (const tagint m : touched) row(molecule[i], m)[9] += node_area[i];
+  }
+
+  // the same rows on every rank: gather (i, j, sums) and add up
+  std::vector<double> mine;
+  for (const auto &kv : local) {
+    mine.push_back(kv.first.first);
+    mine.push_back(kv.first.second);
+    mine.insert(mine.end(), kv.second.begin(), kv.second.end());
+  }
+  const int nmine = mine.size();
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<double> gathered(total);
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, gathered.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+  std::map<std::pair<int, int>, std::array<double, NCOL>> rows;
+  auto global_row = [&](int m1, int m2) -> std::array<double, NCOL> & {
+    auto key = std::make_pair(MIN(m1, m2), MAX(m1, m2));
+    auto it = rows.find(key);
+    if (it == rows.end()) {
+      std::array<double, NCOL> r{};
+      r[CELL_I] = key.first;
+      r[CELL_J] = key.second;
+      it = rows.emplace(key, r).first;
+    }
+    return it->second;
+  };
+  std::map<std::pair<int, int>, std::array<double, 6>> forces;    // lamella, contact vectors
+  for (int k = 0; k < total; k += 2 + NSUM) {
+    const int m1 = (int) gathered[k], m2 = (int) gathered[k + 1];
+    const double *s = &gathered[k + 2];
+    auto &r = global_row(m1, m2);
+    r[NBONDS] += s[0];
+    r[GLUED_AREA] += s[1];
+    r[NCONTACTS] += s[8];
+    r[CONTACT_AREA] += 0.5 * s[9];
+    auto &f = forces[std::make_pair(m1, m2)];
+    for (int d = 0; d < 6; d++) f[d] += s[2 + d];
+  }
+
+  // debonded bonds: the per-cell-pair table of fix cell_debonded (cell i, cell j, bonds, area)
+  auto *debonded = modify->get_fix_by_id("cell_debonded");
+  if (debonded && debonded->array_flag)
+    for (int r = 0; r < debonded->size_array_rows; r++) {
+      auto &g = global_row((int) debonded->compute_array(r, 0), (int) debonded->compute_array(r, 1));
+      g[NDEBONDED] += debonded->compute_array(r, 2);
+      g[DEBONDED_AREA] += debonded->compute_array(r, 3);
+    }
+
+  // normal components along the line of the centres, from the lower cell to the higher one
+  for (auto &kv : rows) {
+    const int m1 = kv.first.first, m2 = kv.first.second;
+    auto &r = kv.second;
+    double n[3], len = 0.0;
+    if (m1 >= 1 && m2 <= ncells)
+      for (int d = 0; d < 3; d++) {
+        n[d] = c[3 * m2 + d] - c[3 * m1 + d];
+        len += n[d] * n[d];
+      }
+    len = sqrt(len);
+    r[DISTANCE] = len;
+    auto f = forces.find(kv.first);
+    if (len > 0.0 && f != forces.end()) {
+      double fl = 0.0, fc = 0.0;
+      for (int d = 0; d < 3; d++) {
+        fl += f->second[d] * n[d] / len;
+        fc += f->second[3 + d] * n[d] / len;
+      }
+      r[F_LAMELLA] = fl;
+      r[F_CONTACT] = fc;
+    }
+  }
+
+  const int nrows = rows.size();
+  if (nrows > nrows_max || !array) {
+    memory->destroy(array);
+    nrows_max = MAX(nrows, 1);
+    memory->create(array, nrows_max, NCOL, "cell/contacts:array");
+  }
+  size_array_rows = nrows;
+  int k = 0;
+  for (const auto &kv : rows) {
+    for (int col = 0; col < NCOL; col++) array[k][col] = kv.second[col];
+    k++;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int ComputeCellContacts::pack_reverse_comm(int n, int first, double *buf)
+{
+  for (int i = 0; i < n; i++) buf[i] = node_area[first + i];
+  return n;
+}
+
+void ComputeCellContacts::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int i = 0; i < n; i++) node_area[list[i]] += buf[i];
+}
+
+double ComputeCellContacts::memory_usage()
+{
+  return (double) nmax * sizeof(double) + (double) nrows_max * NCOL * sizeof(double);
+}

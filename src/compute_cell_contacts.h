@@ -1,0 +1,60 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellmech: per-cell-pair observables of a tissue: middle-lamella bonds
+   and area (intact and debonded), the force the lamella and the wall-wall
+   contacts carry between the two cells, and their contact area.
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(cell/contacts,ComputeCellContacts);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_CELL_CONTACTS_H
+#define LMP_COMPUTE_CELL_CONTACTS_H
+
+#include "compute.h"
+
+namespace LAMMPS_NS {
+
+class ComputeCellContacts : public Compute {
+ public:
+  enum {
+    CELL_I,
+    CELL_J,
+    NBONDS,
+    GLUED_AREA,
+    NDEBONDED,
+    DEBONDED_AREA,
+    F_LAMELLA,
+    F_CONTACT,
+    NCONTACTS,
+    CONTACT_AREA,
+    DISTANCE,
+    NCOL
+  };
+
+  ComputeCellContacts(class LAMMPS *, int, char **);
+  ~ComputeCellContacts() override;
+  void init() override;
+  void init_list(int, class NeighList *) override;
+  void compute_array() override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+ private:
+  int nmax;
+  double *node_area;    // per atom: a third of the current area of its triangles
+  int ialam;            // per-atom lamella area d_alam, -1 without one
+  int nrows_max;
+  class NeighList *list;
+  class PairCellSPH *sph;
+  class Pair *contact;    // pair cell/lj84: the wall-wall contacts
+  double **contact_r0;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
