@@ -107,8 +107,8 @@ void BondCellTether::compute(int eflag, int vflag)
     // of the atom(s) storing it now; the rest of the topology follows in process_breaks().
     if (lamf[type] > 0.0 && lam > lamf[type]) {
       bondlist[n][2] = 0;
-      remove_bond(i1, tag[i2]);
-      if (!newton_bond && i2 < nlocal) remove_bond(i2, tag[i1]);
+      FixCellTetherBreak::remove_bond(atom, i1, tag[i2]);
+      if (!newton_bond && i2 < nlocal) FixCellTetherBreak::remove_bond(atom, i2, tag[i1]);
       broken.emplace_back(MIN(tag[i1], tag[i2]), MAX(tag[i1], tag[i2]));
       continue;
     }
@@ -136,21 +136,6 @@ void BondCellTether::compute(int eflag, int vflag)
   }
   checked = 1;
   if (breakable) process_breaks();
-}
-
-/* ---------------------------------------------------------------------- */
-
-void BondCellTether::remove_bond(int i, tagint partner)
-{
-  int *num_bond = atom->num_bond;
-  for (int m = 0; m < num_bond[i]; m++)
-    if (atom->bond_atom[i][m] == partner) {
-      const int last = num_bond[i] - 1;
-      atom->bond_atom[i][m] = atom->bond_atom[i][last];
-      atom->bond_type[i][m] = atom->bond_type[i][last];
-      num_bond[i]--;
-      return;
-    }
 }
 
 /* ----------------------------------------------------------------------

@@ -46,7 +46,6 @@ class BondCellTether : public Bond {
   int breakable;    // some bond type has a critical stretch lamf
   std::vector<std::pair<tagint, tagint>> broken;    // tag pairs broken on this rank, this step
 
-  void remove_bond(int i, tagint partner);
   void process_breaks();
   void add_break_fix();
 

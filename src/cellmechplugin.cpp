@@ -12,11 +12,13 @@
 #include "lammps.h"
 #include "version.h"
 
+#include "bond_cell_lamella.h"
 #include "bond_cell_tether.h"
 #include "compute_cell_contacts.h"
 #include "compute_cell_props.h"
 #include "compute_cell_shear_atom.h"
 #include "fix_cell_fluid.h"
+#include "fix_cell_lamella_break.h"
 #include "fix_cell_tether_break.h"
 #include "fix_cell_vtk.h"
 #include "pair_cell_lj84.h"
@@ -66,6 +68,8 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   } styles[] = {
       {"bond", "cell/tether", "cellmech Neo-Hookean cell wall tether",
        &create<Bond, BondCellTether>, nullptr},
+      {"bond", "cell/lamella", "cellmech middle lamella: cohesive bond between cells",
+       &create<Bond, BondCellLamella>, nullptr},
       {"pair", "cell/lj84", "cellmech 8-4 excluded-volume repulsion with contact damping",
        &create<Pair, PairCellLJ84>, nullptr},
       {"pair", "cell/sph", "cellmech SPH protoplasm (Tait, Morris viscosity, continuity)",
@@ -76,6 +80,8 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
        nullptr, &create<Fix, FixCellFluid>},
       {"fix", "CELL_TETHER_BREAK", "cellmech bookkeeping of broken tethers (internal)", nullptr,
        &create<Fix, FixCellTetherBreak>},
+      {"fix", "CELL_LAMELLA_BREAK", "cellmech bookkeeping of debonded lamella bonds (internal)",
+       nullptr, &create<Fix, FixCellLamellaBreak>},
       {"fix", "cell/vtk", "cellmech cell walls as VTK triangulated surfaces for ParaView", nullptr,
        &create<Fix, FixCellVTK>},
       {"compute", "cell/props",

@@ -88,8 +88,6 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
   if (pairs.empty()) return;
   const int nlocal = atom->nlocal;
   tagint *tag = atom->tag;
-  int **nspecial = atom->nspecial;
-  tagint **special = atom->special;
 
   auto edge_of = [&pairs](tagint t1, tagint t2, tagint t3) {
     for (const auto &p : pairs) {
@@ -107,15 +105,7 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
       const int i = atom->map(me);
       if (i < 0 || i >= nlocal) continue;
       nbroken[i] += 1.0;
-      // the 1-2 neighbours come first in the special list; drop the partner, shift the rest
-      const int n12 = nspecial[i][0];
-      int m = 0;
-      while (m < n12 && special[i][m] != other) m++;
-      if (m == n12) continue;    // not a 1-2 pair (e.g. a second tether between them broke)
-      for (int k = m; k < nspecial[i][2] - 1; k++) special[i][k] = special[i][k + 1];
-      nspecial[i][0]--;
-      nspecial[i][1]--;
-      nspecial[i][2]--;
+      remove_special12(atom, i, other);
     }
   }
 
@@ -155,6 +145,37 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
 
   // the pair is no longer excluded: rebuild the neighbor lists before the next force call
   next_reneighbor = update->ntimestep + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTetherBreak::remove_bond(Atom *atom, int i, tagint partner)
+{
+  int *num_bond = atom->num_bond;
+  for (int m = 0; m < num_bond[i]; m++)
+    if (atom->bond_atom[i][m] == partner) {
+      const int last = num_bond[i] - 1;
+      atom->bond_atom[i][m] = atom->bond_atom[i][last];
+      atom->bond_type[i][m] = atom->bond_type[i][last];
+      num_bond[i]--;
+      return;
+    }
+}
+
+bool FixCellTetherBreak::remove_special12(Atom *atom, int i, tagint other)
+{
+  int **nspecial = atom->nspecial;
+  tagint **special = atom->special;
+  // the 1-2 neighbours come first in the special list; drop the partner, shift the rest
+  const int n12 = nspecial[i][0];
+  int m = 0;
+  while (m < n12 && special[i][m] != other) m++;
+  if (m == n12) return false;    // not a 1-2 pair (e.g. a second bond between them broke)
+  for (int k = m; k < nspecial[i][2] - 1; k++) special[i][k] = special[i][k + 1];
+  nspecial[i][0]--;
+  nspecial[i][1]--;
+  nspecial[i][2]--;
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */

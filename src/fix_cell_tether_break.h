@@ -32,6 +32,12 @@ class FixCellTetherBreak : public Fix {
   // every rank calls this with the same list: the tag pairs of the tethers broken this step
   void apply(const std::vector<std::pair<tagint, tagint>> &pairs);
 
+  // drop the atom with tag other from the 1-2 special list of local atom i (also used for
+  // debonded lamella bonds, fix CELL_LAMELLA_BREAK); false when it is not a 1-2 neighbour
+  static bool remove_special12(class Atom *atom, int i, tagint other);
+  // drop the bond to partner from atom i's bond arrays (the last bond takes its slot)
+  static void remove_bond(class Atom *atom, int i, tagint partner);
+
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   int pack_exchange(int, double *) override;

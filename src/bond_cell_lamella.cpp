@@ -1,0 +1,479 @@
+/* ----------------------------------------------------------------------
+   cellmech: bond style cell/lamella
+
+   The middle lamella glues the walls of neighbouring cells. A lamella bond
+   joins two wall nodes of DIFFERENT cells (molecule IDs) and carries the
+   cohesive law of cell_physics.h (Xu & Needleman, Eqs. L1-L5) over the
+   wall area it stands for, A = (alam_i + alam_j)/2, where d_alam is each
+   node's tributary wall area divided by its number of lamella bonds: the
+   force of an interface is then the traction times its area whatever the
+   wall resolution. The rest length is the distance of the two nodes'
+   reference positions d2_cellref, as for bond style cell/tether, so both
+   per-bond quantities travel with the atoms (MPI, restart, write_data)
+   without per-bond storage.
+
+   The law is elastic up to complete separation; debonding at 10 delta_c is
+   irreversible: the bond leaves the bond arrays and the internal fix
+   cell_debonded (CELL_LAMELLA_BREAK) updates the special lists and the
+   per-cell-pair record on every rank.
+------------------------------------------------------------------------- */
+
+#include "bond_cell_lamella.h"
+
+#include "atom.h"
+#include "cell_physics.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_cell_tether_break.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace CellPhysics;
+
+static constexpr char REF_NAME[] = "cellref";
+static constexpr char AREA_NAME[] = "alam";
+
+/* ---------------------------------------------------------------------- */
+
+BondCellLamella::BondCellLamella(LAMMPS *_lmp) :
+    Bond(_lmp), sigma(nullptr), Gc(nullptr), gamma(nullptr), dc(nullptr), iref(-1), ialam(-1),
+    lmax(0.0)
+{
+  born_matrix_enable = 0;
+}
+
+BondCellLamella::~BondCellLamella()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(sigma);
+    memory->destroy(Gc);
+    memory->destroy(gamma);
+    memory->destroy(dc);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondCellLamella::rest_length(int i, int j) const
+{
+  double **ref = atom->darray[iref];
+  const double dx = ref[i][0] - ref[j][0];
+  const double dy = ref[i][1] - ref[j][1];
+  const double dz = ref[i][2] - ref[j][2];
+  return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+double BondCellLamella::area(int i, int j) const
+{
+  const double *alam = atom->dvector[ialam];
+  return 0.5 * (alam[i] + alam[j]);
+}
+
+// delta_c follows sigma_c and Gc, also when fix adapt changes them during a run
+void BondCellLamella::update_dc()
+{
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    if (setflag[i]) dc[i] = cohesive_length(sigma[i], Gc[i]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellLamella::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  update_dc();
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  tagint *tag = atom->tag;
+  tagint *mol = atom->molecule;
+  const double *alam = atom->dvector[ialam];
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  double ebond = 0.0;
+
+  for (int n = 0; n < nbondlist; n++) {
+    const int i1 = bondlist[n][0];
+    const int i2 = bondlist[n][1];
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;    // debonded
+
+    if (mol[i1] == mol[i2])
+      error->one(FLERR,
+                 "Bond style cell/lamella: bond {}-{} joins two nodes of the same cell (molecule "
+                 "{}); lamella bonds join the walls of different cells",
+                 tag[i1], tag[i2], mol[i1]);
+    if (!(alam[i1] > 0.0) || !(alam[i2] > 0.0))
+      error->one(FLERR,
+                 "Bond style cell/lamella: bond {}-{} has no area (d_alam {} and {}); is d_alam "
+                 "set for every node with lamella bonds and communicated to ghosts (ghost yes)?",
+                 tag[i1], tag[i2], alam[i1], alam[i2]);
+    const double r0 = rest_length(i1, i2);
+    if (!(r0 > 0.0))
+      error->one(FLERR,
+                 "Bond style cell/lamella: bond {}-{} has zero rest length; are the d2_cellref "
+                 "reference positions set and communicated to ghosts (ghost yes)?",
+                 tag[i1], tag[i2]);
+
+    const double delx = x[i1][0] - x[i2][0];
+    const double dely = x[i1][1] - x[i2][1];
+    const double delz = x[i1][2] - x[i2][2];
+    const double rsq = delx * delx + dely * dely + delz * delz;
+    const double r = sqrt(rsq);
+    const double delta = r - r0;
+    const double A = area(i1, i2);
+
+    // Debonding is irreversible: the bond leaves the bond arrays of the atom(s) storing it now;
+    // special lists and the record follow in process_debonds()
+    if (delta > cohesive_break_opening(dc[type])) {
+      bondlist[n][2] = 0;
+      FixCellTetherBreak::remove_bond(atom, i1, tag[i2]);
+      if (!newton_bond && i2 < nlocal) FixCellTetherBreak::remove_bond(atom, i2, tag[i1]);
+      debonded.push_back({MIN(tag[i1], tag[i2]), MAX(tag[i1], tag[i2]),
+                          tag[i1] < tag[i2] ? mol[i1] : mol[i2],
+                          tag[i1] < tag[i2] ? mol[i2] : mol[i1], A});
+      continue;
+    }
+
+    double fbond = -A * cohesive_traction(sigma[type], dc[type], delta) / r;
+    if (gamma[type] > 0.0) {
+      const double dvx = v[i1][0] - v[i2][0];
+      const double dvy = v[i1][1] - v[i2][1];
+      const double dvz = v[i1][2] - v[i2][2];
+      fbond -= A * gamma[type] * (delx * dvx + dely * dvy + delz * dvz) / rsq;
+    }
+    if (eflag) ebond = A * cohesive_energy(sigma[type], dc[type], delta);
+
+    if (newton_bond || i1 < nlocal) {
+      f[i1][0] += delx * fbond;
+      f[i1][1] += dely * fbond;
+      f[i1][2] += delz * fbond;
+    }
+    if (newton_bond || i2 < nlocal) {
+      f[i2][0] -= delx * fbond;
+      f[i2][1] -= dely * fbond;
+      f[i2][2] -= delz * fbond;
+    }
+    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+  }
+  process_debonds();
+}
+
+using Event = FixCellLamellaBreak::Event;
+
+static bool tag_order(const Event &a, const Event &b)
+{
+  return std::make_pair(a.tag1, a.tag2) < std::make_pair(b.tag1, b.tag2);
+}
+
+static bool same_bond(const Event &a, const Event &b)
+{
+  return a.tag1 == b.tag1 && a.tag2 == b.tag2;
+}
+
+/* ----------------------------------------------------------------------
+   Every rank must update its own atoms' special lists and decide the same
+   re-neighboring, so the debonds of a step are gathered from all ranks.
+   Which ranks have any is only known after one reduction of a single int
+   per force call (as for tethers; a lamella can always debond); the
+   gathers follow only in the rare steps that have debonds.
+------------------------------------------------------------------------- */
+
+void BondCellLamella::process_debonds()
+{
+  const int nmine = (int) debonded.size();
+  int nall = 0;
+  MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
+  if (nall == 0) return;
+
+  const int nprocs = comm->nprocs;
+  std::vector<int> nper(nprocs), counts(nprocs), displs(nprocs);
+  MPI_Allgather(&nmine, 1, MPI_INT, nper.data(), 1, MPI_INT, world);
+
+  // tags and cells as tagints, areas as doubles: two gathers keep bigbig tags exact
+  std::vector<tagint> tmine, tall(4 * (size_t) nall);
+  std::vector<double> amine, aall(nall);
+  for (const auto &e : debonded) {
+    tmine.insert(tmine.end(), {e.tag1, e.tag2, e.mol1, e.mol2});
+    amine.push_back(e.area);
+  }
+  for (int p = 0, off = 0; p < nprocs; p++) {
+    counts[p] = 4 * nper[p];
+    displs[p] = off;
+    off += counts[p];
+  }
+  MPI_Allgatherv(tmine.data(), 4 * nmine, MPI_LMP_TAGINT, tall.data(), counts.data(), displs.data(),
+                 MPI_LMP_TAGINT, world);
+  for (int p = 0; p < nprocs; p++) {
+    counts[p] /= 4;
+    displs[p] /= 4;
+  }
+  MPI_Allgatherv(amine.data(), nmine, MPI_DOUBLE, aall.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+  debonded.clear();
+
+  // with newton_bond off both owners of a bond saw it debond; sorted, the order (and so the
+  // table and the log) does not depend on the domain decomposition
+  std::vector<Event> events;
+  for (int k = 0; k < nall; k++)
+    events.push_back({tall[4 * k], tall[4 * k + 1], tall[4 * k + 2], tall[4 * k + 3], aall[k]});
+  std::sort(events.begin(), events.end(), tag_order);
+  events.erase(std::unique(events.begin(), events.end(), same_bond), events.end());
+
+  atom->nbonds -= (bigint) events.size();
+  break_fix()->apply(events);
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixCellLamellaBreak *BondCellLamella::break_fix()
+{
+  auto *fix = dynamic_cast<FixCellLamellaBreak *>(modify->get_fix_by_id(FixCellLamellaBreak::ID));
+  if (!fix)
+    error->all(FLERR, "Bond style cell/lamella: internal fix {} is missing",
+               FixCellLamellaBreak::ID);
+  return fix;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellLamella::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->nbondtypes + 1;
+  memory->create(sigma, np1, "bond:sigma");
+  memory->create(Gc, np1, "bond:Gc");
+  memory->create(gamma, np1, "bond:gamma");
+  memory->create(dc, np1, "bond:dc");
+  memory->create(setflag, np1, "bond:setflag");
+  for (int i = 1; i < np1; i++) setflag[i] = 0;
+}
+
+/* ----------------------------------------------------------------------
+   bond_style cell/lamella [log FILE]
+------------------------------------------------------------------------- */
+
+void BondCellLamella::settings(int narg, char **arg)
+{
+  if (narg == 0) return;
+  if (narg != 2 || strcmp(arg[0], "log") != 0)
+    error->all(FLERR,
+               "Illegal bond_style cell/lamella command: expected 'bond_style cell/lamella [log "
+               "FILE]', got {} arguments{}{}",
+               narg, narg ? " starting with " : "", narg ? arg[0] : "");
+  logfile = arg[1];
+}
+
+/* ----------------------------------------------------------------------
+   bond_coeff N sigma_c Gc [gamma]
+------------------------------------------------------------------------- */
+
+void BondCellLamella::coeff(int narg, char **arg)
+{
+  if (narg != 3 && narg != 4)
+    error->all(FLERR,
+               "Incorrect number of args for bond_coeff cell/lamella: expected 'bond_coeff N "
+               "sigma_c Gc [gamma]', got {} arguments",
+               narg);
+  if (!allocated) allocate();
+
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
+
+  const double sigma_one = utils::numeric(FLERR, arg[1], false, lmp);
+  const double Gc_one = utils::numeric(FLERR, arg[2], false, lmp);
+  const double gamma_one = narg == 4 ? utils::numeric(FLERR, arg[3], false, lmp) : 0.0;
+  if (!(sigma_one > 0.0))
+    error->all(FLERR, "bond_coeff cell/lamella: strength sigma_c must be > 0, got {}", sigma_one);
+  if (!(Gc_one > 0.0))
+    error->all(FLERR, "bond_coeff cell/lamella: fracture energy Gc must be > 0, got {}", Gc_one);
+  if (!(gamma_one >= 0.0))
+    error->all(FLERR, "bond_coeff cell/lamella: damping gamma must be >= 0, got {}", gamma_one);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    sigma[i] = sigma_one;
+    Gc[i] = Gc_one;
+    gamma[i] = gamma_one;
+    dc[i] = cohesive_length(sigma_one, Gc_one);
+    setflag[i] = 1;
+    count++;
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for bond coefficients");
+  // created now, so that f_cell_debonded can be used in thermo and variables at once; after
+  // read_restart it picks up the per-pair table and the per-atom counts of the restart file
+  add_break_fix();
+}
+
+/* ----------------------------------------------------------------------
+   the debond bookkeeping; when it is created after read_restart it picks
+   up its data from the restart file
+------------------------------------------------------------------------- */
+
+void BondCellLamella::add_break_fix()
+{
+  if (!modify->get_fix_by_id(FixCellLamellaBreak::ID))
+    modify->add_fix(fmt::format("{} all CELL_LAMELLA_BREAK", FixCellLamellaBreak::ID));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellLamella::init_style()
+{
+  if (!atom->molecule_flag)
+    error->all(FLERR,
+               "Bond style cell/lamella requires molecule IDs (the cells), e.g. atom_style "
+               "molecular");
+
+  int flag, cols, ghost;
+  iref = atom->find_custom_ghost(REF_NAME, flag, cols, ghost);
+  if (iref < 0 || flag != 1 || cols != 3 || !ghost)
+    error->all(FLERR,
+               "Bond style cell/lamella requires the wall reference positions as a per-atom array "
+               "communicated to ghosts: 'fix cell all property/atom rmass d_rho d_drho d2_{} 3 "
+               "d_{} ghost yes' before read_data",
+               REF_NAME, AREA_NAME);
+  ialam = atom->find_custom_ghost(AREA_NAME, flag, cols, ghost);
+  if (ialam < 0 || flag != 1 || cols != 0 || !ghost)
+    error->all(FLERR,
+               "Bond style cell/lamella requires the area share of each node's lamella bonds as a "
+               "per-atom vector communicated to ghosts: 'fix cell all property/atom rmass d_rho "
+               "d_drho d2_{} 3 d_{} ghost yes' before read_data",
+               REF_NAME, AREA_NAME);
+
+  bool damped = false;
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    if (setflag[i] && gamma[i] > 0.0) damped = true;
+  if (damped && !comm->ghost_velocity)
+    error->all(FLERR,
+               "Bond style cell/lamella with damping gamma > 0 requires 'comm_modify vel yes' "
+               "(ghost velocities)");
+
+  // a debonded pair leaves the 1-2 list and becomes an ordinary contact pair (or a 1-3 pair when
+  // the special list is rebuilt from the bonds): the same only with 1-3 and 1-4 weights 1
+  if (force->special_lj[2] != 1.0 || force->special_lj[3] != 1.0)
+    error->all(FLERR,
+               "Bond style cell/lamella requires 'special_bonds lj 0 1 1' (got lj {} {} {}): "
+               "debonded nodes become a contact pair of the pair style",
+               force->special_lj[1], force->special_lj[2], force->special_lj[3]);
+
+  // longest rest length of the local lamella bonds, for LAMMPS's bond-extent sanity check
+  double lmax_local = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < atom->num_bond[i]; m++) {
+      const int type = atom->bond_type[i][m];
+      const int j = atom->map(atom->bond_atom[i][m]);
+      if (type > 0 && setflag[type] && j >= 0) lmax_local = MAX(lmax_local, rest_length(i, j));
+    }
+  MPI_Allreduce(&lmax_local, &lmax, 1, MPI_DOUBLE, MPI_MAX, world);
+
+  update_dc();
+  debonded.clear();
+  // made by bond_coeff, or here for coefficients from a restart file, before the fixes are
+  // initialised
+  add_break_fix();
+  break_fix()->set_log(logfile);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondCellLamella::equilibrium_distance(int /*i*/)
+{
+  return lmax;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondCellLamella::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  fwrite(&sigma[1], sizeof(double), atom->nbondtypes, fp);
+  fwrite(&Gc[1], sizeof(double), atom->nbondtypes, fp);
+  fwrite(&gamma[1], sizeof(double), atom->nbondtypes, fp);
+}
+
+void BondCellLamella::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int n = atom->nbondtypes;
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &sigma[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &Gc[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
+  }
+  MPI_Bcast(&sigma[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&Gc[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
+  for (int i = 1; i <= n; i++) {
+    setflag[i] = 1;
+    dc[i] = cohesive_length(sigma[i], Gc[i]);
+  }
+}
+
+// the log file name, so that a continued run appends to the record of the run that wrote the
+// restart file (bond_style hybrid stores only this part of its sub-styles)
+void BondCellLamella::write_restart_settings(FILE *fp)
+{
+  const int n = (int) logfile.size() + 1;
+  fwrite(&n, sizeof(int), 1, fp);
+  fwrite(logfile.c_str(), sizeof(char), n, fp);
+}
+
+void BondCellLamella::read_restart_settings(FILE *fp)
+{
+  int n = 0;
+  if (comm->me == 0) utils::sfread(FLERR, &n, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&n, 1, MPI_INT, 0, world);
+  std::vector<char> buf(n);
+  if (comm->me == 0) utils::sfread(FLERR, buf.data(), sizeof(char), n, fp, nullptr, error);
+  MPI_Bcast(buf.data(), n, MPI_CHAR, 0, world);
+  logfile = buf.data();
+}
+
+void BondCellLamella::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    fprintf(fp, "%d %.15g %.15g %.15g\n", i, sigma[i], Gc[i], gamma[i]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondCellLamella::single(int type, double rsq, int i, int j, double &fforce)
+{
+  const double r = sqrt(rsq);
+  const double delta = r - rest_length(i, j);
+  const double A = area(i, j);
+  const double delta_c = cohesive_length(sigma[type], Gc[type]);
+  fforce = -A * cohesive_traction(sigma[type], delta_c, delta) / r;
+  if (gamma[type] > 0.0) {
+    double **x = atom->x;
+    double **v = atom->v;
+    double dot = 0.0;
+    for (int d = 0; d < 3; d++) dot += (x[i][d] - x[j][d]) * (v[i][d] - v[j][d]);
+    fforce -= A * gamma[type] * dot / rsq;
+  }
+  return A * cohesive_energy(sigma[type], delta_c, delta);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void *BondCellLamella::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "sigma") == 0) return (void *) sigma;
+  if (strcmp(str, "Gc") == 0) return (void *) Gc;
+  if (strcmp(str, "gamma") == 0) return (void *) gamma;
+  return nullptr;
+}

@@ -1,0 +1,242 @@
+/* ----------------------------------------------------------------------
+   cellmech: internal fix CELL_LAMELLA_BREAK
+
+   When a middle-lamella bond debonds, bond style cell/lamella removes it
+   from the bond arrays of the atom that stores it and hands the events of
+   all bonds debonded in this step (gathered from every rank) to apply().
+   Every rank then
+   - takes the two nodes out of each other's 1-2 special list (the same
+     code as for a broken tether, FixCellTetherBreak::remove_special12) and
+     re-neighbors on the next step, so that the nodes of the two cells
+     become an ordinary contact pair that the 8-4 repulsion keeps apart: a
+     debonded interface still resists interpenetration, it only lost its
+     tensile strength. A lamella bond is no triangle edge: no angles change;
+   - counts the debond at its nodes that it owns (per-atom vector; travels
+     with the atoms and is written to restart files);
+   - adds it to the table of debonds per pair of cells. All ranks see the
+     same events in the same order, so the table is identical everywhere
+     without communication; it is written to restart files by rank 0 and
+     restored on all ranks.
+   Tether rupture has its own fix (cell_broken): a crack through a wall and
+   a cell separating from its neighbour are different failure modes.
+------------------------------------------------------------------------- */
+
+#include "fix_cell_lamella_break.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_cell_tether_break.h"
+#include "memory.h"
+#include "update.h"
+
+#include <algorithm>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static constexpr int NCOLS = 6;    // cell i, cell j, count, area, t_first, t_last
+
+/* ---------------------------------------------------------------------- */
+
+FixCellLamellaBreak::FixCellLamellaBreak(LAMMPS *_lmp, int narg, char **arg) :
+    Fix(_lmp, narg, arg), ndebond(nullptr), ntotal(0), logfp(nullptr)
+{
+  if (narg != 3)
+    error->all(FLERR, "Illegal fix CELL_LAMELLA_BREAK command: expected no arguments, got {}",
+               narg - 3);
+  restart_global = 1;
+  restart_peratom = 1;
+  scalar_flag = 1;
+  extscalar = 0;
+  array_flag = 1;
+  size_array_cols = NCOLS;
+  size_array_rows = 0;
+  size_array_rows_variable = 1;
+  extarray = 0;
+  global_freq = 1;
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+  peratom_freq = 1;
+  force_reneighbor = 1;
+  next_reneighbor = -1;
+
+  FixCellLamellaBreak::grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) ndebond[i] = 0.0;
+}
+
+FixCellLamellaBreak::~FixCellLamellaBreak()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(ndebond);
+  if (logfp) fclose(logfp);
+}
+
+int FixCellLamellaBreak::setmask()
+{
+  return 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixCellLamellaBreak::compute_scalar()
+{
+  return (double) ntotal;
+}
+
+double FixCellLamellaBreak::compute_array(int i, int j)
+{
+  if (i < 0 || i >= (int) rows.size() || j < 0 || j >= NCOLS) return 0.0;
+  return rows[i][j];
+}
+
+void FixCellLamellaBreak::update_rows()
+{
+  rows.clear();
+  ntotal = 0;
+  for (const auto &kv : table) {
+    const Debond &d = kv.second;
+    rows.push_back({(double) kv.first.first, (double) kv.first.second, (double) d.count, d.area,
+                    d.tfirst, d.tlast});
+    ntotal += d.count;
+  }
+  size_array_rows = (int) rows.size();
+}
+
+/* ----------------------------------------------------------------------
+   the log is appended to, so that a run continued from a restart file
+   extends the record of the run that wrote it
+------------------------------------------------------------------------- */
+
+void FixCellLamellaBreak::set_log(const std::string &file)
+{
+  if (file == logname) return;
+  if (logfp) fclose(logfp);
+  logfp = nullptr;
+  logname = file;
+  if (comm->me != 0 || logname.empty()) return;
+  logfp = fopen(logname.c_str(), "a");
+  if (!logfp)
+    error->one(FLERR, "Bond style cell/lamella: cannot open the debond log file {}: {}", logname,
+               utils::getsyserror());
+  if (ftell(logfp) == 0) {
+    utils::print(logfp, "# lamella debonds: step time tag_i tag_j cell_i cell_j area\n");
+    fflush(logfp);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellLamellaBreak::apply(const std::vector<Event> &events)
+{
+  if (events.empty()) return;
+  const int nlocal = atom->nlocal;
+  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+
+  for (const auto &e : events) {
+    for (int side = 0; side < 2; side++) {
+      const int i = atom->map(side ? e.tag2 : e.tag1);
+      if (i < 0 || i >= nlocal) continue;
+      ndebond[i] += 1.0;
+      FixCellTetherBreak::remove_special12(atom, i, side ? e.tag1 : e.tag2);
+    }
+    const auto key = std::make_pair(std::min(e.mol1, e.mol2), std::max(e.mol1, e.mol2));
+    auto it = table.find(key);
+    if (it == table.end()) it = table.emplace(key, Debond{0, 0.0, time, time}).first;
+    it->second.count++;
+    it->second.area += e.area;
+    it->second.tlast = time;
+    if (logfp)
+      utils::print(logfp, "{} {:.10g} {} {} {} {} {:.10g}\n", update->ntimestep, time, e.tag1,
+                   e.tag2, key.first, key.second, e.area);
+  }
+  if (logfp) fflush(logfp);
+  update_rows();
+
+  // the pair is no longer excluded: rebuild the neighbor lists before the next force call
+  next_reneighbor = update->ntimestep + 1;
+}
+
+/* ----------------------------------------------------------------------
+   global restart: the per-pair table, as doubles (cell IDs below 2^53)
+------------------------------------------------------------------------- */
+
+void FixCellLamellaBreak::write_restart(FILE *fp)
+{
+  std::vector<double> list;
+  list.push_back((double) rows.size());
+  for (const auto &r : rows) list.insert(list.end(), r.begin(), r.end());
+  if (comm->me == 0) {
+    const int size = (int) (list.size() * sizeof(double));
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list.data(), sizeof(double), list.size(), fp);
+  }
+}
+
+void FixCellLamellaBreak::restart(char *buf)
+{
+  const auto *list = (const double *) buf;
+  const int n = static_cast<int>(list[0]);
+  table.clear();
+  for (int k = 0; k < n; k++) {
+    const double *r = list + 1 + NCOLS * k;
+    const auto key = std::make_pair((tagint) r[0], (tagint) r[1]);
+    table[key] = Debond{static_cast<int>(r[2]), r[3], r[4], r[5]};
+  }
+  update_rows();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellLamellaBreak::grow_arrays(int nmax)
+{
+  memory->grow(ndebond, nmax, "cell_lamella_break:ndebond");
+  vector_atom = ndebond;
+}
+
+void FixCellLamellaBreak::copy_arrays(int i, int j, int /*delflag*/)
+{
+  ndebond[j] = ndebond[i];
+}
+
+int FixCellLamellaBreak::pack_exchange(int i, double *buf)
+{
+  buf[0] = ndebond[i];
+  return 1;
+}
+
+int FixCellLamellaBreak::unpack_exchange(int nlocal, double *buf)
+{
+  ndebond[nlocal] = buf[0];
+  return 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixCellLamellaBreak::pack_restart(int i, double *buf)
+{
+  buf[0] = 2;    // values for this atom, including this count (LAMMPS convention)
+  buf[1] = ndebond[i];
+  return 2;
+}
+
+void FixCellLamellaBreak::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  ndebond[nlocal] = extra[nlocal][m + 1];
+}
+
+int FixCellLamellaBreak::maxsize_restart()
+{
+  return 2;
+}
+
+int FixCellLamellaBreak::size_restart(int /*nlocal*/)
+{
+  return 2;
+}

@@ -1,0 +1,82 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   cellmech: internal fix CELL_LAMELLA_BREAK, the bookkeeping of debonded
+   middle-lamella bonds between cells. Created by bond style cell/lamella
+   with the ID cell_debonded; kept apart from tether rupture (cell_broken).
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(CELL_LAMELLA_BREAK,FixCellLamellaBreak);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_CELL_LAMELLA_BREAK_H
+#define LMP_FIX_CELL_LAMELLA_BREAK_H
+
+#include "fix.h"
+
+#include <cstdio>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixCellLamellaBreak : public Fix {
+ public:
+  static constexpr const char *ID = "cell_debonded";
+
+  // one debonded lamella bond: its atoms and their cells (molecule IDs), its area
+  struct Event {
+    tagint tag1, tag2, mol1, mol2;
+    double area;
+  };
+  // the debonds between one pair of cells
+  struct Debond {
+    int count;        // bonds debonded
+    double area;      // their total area
+    double tfirst;    // time of the first and the last debond
+    double tlast;
+  };
+
+  FixCellLamellaBreak(class LAMMPS *, int, char **);
+  ~FixCellLamellaBreak() override;
+  int setmask() override;
+  double compute_scalar() override;
+  double compute_array(int, int) override;
+
+  // every rank calls this with the same list: the bonds debonded this step, without duplicates
+  void apply(const std::vector<Event> &events);
+  // event log (rank 0 appends one line per debond); empty: none
+  void set_log(const std::string &file);
+
+  // the debonds per pair of cells (cell i < cell j), identical on all ranks
+  const std::map<std::pair<tagint, tagint>, Debond> &pairs() const { return table; }
+
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int maxsize_restart() override;
+  int size_restart(int) override;
+
+ protected:
+  double *ndebond;    // per atom: lamella bonds debonded at this node
+  std::map<std::pair<tagint, tagint>, Debond> table;
+  std::vector<std::vector<double>> rows;    // the table as compute_array() gives it
+  bigint ntotal;                            // debonded bonds, the sum of the table's counts
+  std::string logname;
+  FILE *logfp;
+
+  void update_rows();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
