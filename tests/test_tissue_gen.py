@@ -1,0 +1,272 @@
+"""The tissue generator (tools/cellgen.py tissue): glued polyhedral cells.
+
+Every check is made here, from the data file, independently of the generator's own checks: each
+wall closed and consistently outward-oriented (every tether edge in two triangles, traversed in
+opposite directions; Euler characteristic 2; positive volume; every normal pointing away from the
+cell centre, solid angle 4 pi there), cell volumes + air = tissue box volume, lamella bonds only
+between wall nodes of different cells, at least the gap long and shorter than the cutoff, their
+areas (d_alam) = tributary area / bonds per node, and per pair the bond areas = the mean of the
+two sides' facing areas (triangles within the cutoff of the other cell), neighbour counts (sc
+corner 3, sc interior 6, bcc interior 14), triangle angles above 30 degrees, every fluid particle
+inside its own wall (solid angle 4 pi) and at least the inset from every wall, and the file's
+counts against its header. Bad inputs stop with a message that names the option or line.
+"""
+import json
+import math
+import subprocess
+import sys
+from collections import Counter
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+import lmptest as T
+
+GAP, INSET, CUTOFF, MIN_ANGLE = 2.56, 3.2, 1.5 * 2.56, 30.0
+
+
+def gen(d, name, *args):
+    p = subprocess.run([sys.executable, T.CELLGEN, "tissue", "-o", f"{name}.data", *map(str, args)],
+                       cwd=d, capture_output=True, text=True)
+    return p.returncode, p.stdout + p.stderr
+
+
+def parse(path):
+    lines = open(path).read().split("\n")
+    head = {}
+    for ln in lines[1:30]:
+        w = ln.split()
+        if len(w) == 2 and w[1] in ("atoms", "bonds", "angles"):
+            head[w[1]] = int(w[0])
+    names = ("Masses", "Atoms", "Bonds", "Angles", "cell")
+    sec = {ln.split("#")[0].strip(): i for i, ln in enumerate(lines) if ln.split("#")[0].strip() in names}
+
+    def block(name):
+        out, i = [], sec[name] + 2
+        while i < len(lines) and lines[i].strip():
+            out.append([float(v) for v in lines[i].split()])
+            i += 1
+        return np.array(out)
+
+    return head, lines[sec["cell"]], {n: block(n) for n in names if n in sec}
+
+
+def seg_dist(p, a, b):
+    ab = b - a
+    t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.einsum("ij,ij->i", ab, ab), 0, 1)
+    return np.linalg.norm(p - a - t[:, None] * ab, axis=1)
+
+
+def point_triangle_distance(p, a, b, c):
+    """Exact distance of points p[i] to triangles (a[i], b[i], c[i])."""
+    n = np.cross(b - a, c - a)
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    h = np.einsum("ij,ij->i", p - a, n)
+    q = p - h[:, None] * n
+    inside = np.ones(len(p), bool)
+    for u, v in ((a, b), (b, c), (c, a)):
+        inside &= np.einsum("ij,ij->i", np.cross(v - u, q - u), n) >= 0
+    edge = np.minimum(np.minimum(seg_dist(p, a, b), seg_dist(p, b, c)), seg_dist(p, c, a))
+    return np.where(inside, np.abs(h), edge)
+
+
+def solid_angle(p, a, b, c):
+    """Solid angle of triangles (a, b, c) [T,3] seen from points p [M,3] -> [M]."""
+    A, B, C = a[None] - p[:, None], b[None] - p[:, None], c[None] - p[:, None]
+    la, lb, lc = (np.linalg.norm(v, axis=2) for v in (A, B, C))
+    dot = lambda u, v: np.einsum("mtj,mtj->mt", u, v)  # noqa: E731
+    num = np.einsum("mtj,mtj->mt", A, np.cross(B, C))
+    den = la * lb * lc + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la
+    return 2 * np.arctan2(num, den).sum(axis=1)
+
+
+def check_tissue(d, name, args, neighbours=None, porosity=None, box_volume=None):
+    rc, out = gen(d, name, *args)
+    T.check(f"{name}: generated", rc == 0, out if rc else "")
+    if rc:
+        return None
+    st = json.load(open(f"{d}/{name}.json"))
+    head, cellhead, blk = parse(f"{d}/{name}.data")
+    atoms, cellsec = blk["Atoms"], blk["cell"]
+    bonds = blk.get("Bonds", np.zeros((0, 4))).astype(int)
+    angles = blk["Angles"].astype(int)
+    T.check(f"{name}: counts match the header", head == {"atoms": len(atoms), "bonds": len(bonds),
+            "angles": len(angles)} and len(cellsec) == len(atoms), f"{head}")
+    T.check(f"{name}: cell section has 7 values per atom, d_alam last",
+            cellsec.shape[1] == 8 and cellhead.split()[-1] == "d_alam")
+    T.check(f"{name}: reference positions = positions", np.array_equal(cellsec[:, 4:7], atoms[:, 3:6]))
+    mol, typ, x = atoms[:, 1].astype(int), atoms[:, 2].astype(int), atoms[:, 3:6]
+    alam, rmass = cellsec[:, 7], cellsec[:, 1]
+    ncell = st["cells"]
+    T.check(f"{name}: molecule IDs 1..{ncell}", set(mol) == set(range(1, ncell + 1)))
+    tri = angles[:, 2:5] - 1
+    tmol = mol[tri]
+    T.check(f"{name}: triangles of wall nodes of one cell", np.all(tmol == tmol[:, :1])
+            and np.all(typ[tri] == 1))
+    teth = bonds[bonds[:, 1] == 1][:, 2:4] - 1
+    lam = bonds[bonds[:, 1] == 2][:, 2:4] - 1
+    T.check(f"{name}: only bond types 1 and 2", np.all(np.isin(bonds[:, 1], (1, 2))))
+    # ---- every wall: closed, oriented, Euler 2, outward around its centre, volume
+    vols, ok_closed, ok_out, euler, omegas = [], True, True, set(), []
+    tris_of = {}
+    for k in range(1, ncell + 1):
+        t = tri[tmol[:, 0] == k]
+        tris_of[k] = t
+        e = teth[mol[teth[:, 0]] == k]
+        directed = Counter()
+        for a, b, c in t:
+            directed.update([(a, b), (b, c), (c, a)])
+        und = {(min(u, v), max(u, v)) for u, v in directed}
+        ok_closed &= (all(directed[(u, v)] == 1 and directed[(v, u)] == 1 for u, v in und)
+                      and und == {(min(u, v), max(u, v)) for u, v in e})
+        nodes = np.unique(t)
+        euler.add(len(nodes) - len(e) + len(t))
+        c0 = np.array(st["cell"][k - 1]["centre"])
+        a, b, c = x[t[:, 0]] - c0, x[t[:, 1]] - c0, x[t[:, 2]] - c0
+        vols.append(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
+        ok_out &= bool(np.all(np.einsum("ij,ij->i", np.cross(b - a, c - a), a + b + c) > 0))
+        omegas.append(solid_angle(c0[None], x[t[:, 0]], x[t[:, 1]], x[t[:, 2]])[0])
+    vols = np.array(vols)
+    T.check(f"{name}: every wall closed and consistently oriented (tethers = triangle edges)", ok_closed)
+    T.check(f"{name}: Euler characteristic 2", euler == {2}, f"{euler}")
+    T.check(f"{name}: positive volumes, all normals outward, solid angle 4 pi at the centre",
+            vols.min() > 0 and ok_out and np.allclose(omegas, 4 * math.pi, atol=1e-9),
+            f"min volume {vols.min():.6g}")
+    # ---- volumes, porosity, box
+    tb = np.array(st["tissue_box"])
+    vbox = np.prod(tb[1::2] - tb[0::2])
+    phi = 1 - vols.sum() / vbox
+    T.check(f"{name}: sum of volumes + porosity x box = box volume", abs(phi - st["porosity"]) < 1e-9
+            and abs(vbox - st["box_volume"]) < 1e-6 * vbox, f"porosity {phi:.4f}")
+    if porosity is not None:
+        T.check(f"{name}: porosity as requested", abs(phi - porosity) < 1e-9, f"{phi:.6f}")
+    if box_volume is not None:
+        T.check(f"{name}: block volume", abs(vbox / box_volume - 1) < 1e-12, f"{vbox:.6g}")
+    # ---- triangle quality and reach
+    a, b, c = x[tri[:, 0]], x[tri[:, 1]], x[tri[:, 2]]
+    ang = []
+    for p, q, r in ((a, b, c), (b, c, a), (c, a, b)):
+        u, v = q - p, r - p
+        ang.append(np.degrees(np.arccos(np.einsum("ij,ij->i", u, v) /
+                                        (np.linalg.norm(u, axis=1) * np.linalg.norm(v, axis=1)))))
+    minang = float(np.min(ang))
+    bary = float(np.linalg.norm((a + b + c) / 3 - b, axis=1).max())
+    q = st["triangle_quality"]
+    T.check(f"{name}: smallest triangle angle > {MIN_ANGLE} deg", minang > MIN_ANGLE, f"{minang:.2f}")
+    T.check(f"{name}: max barycentre-node distance as reported, reach = 1.25x rounded up",
+            abs(bary - q["max_barycentre_distance"]) < 1e-9 and q["recommended_reach"] >= 1.25 * bary
+            and q["recommended_reach"] < 1.25 * bary + 0.1 + 1e-9, f"{bary:.3f} -> {q['recommended_reach']}")
+    # ---- lamella bonds
+    glued = {}
+    if len(lam):
+        L = np.linalg.norm(x[lam[:, 0]] - x[lam[:, 1]], axis=1)
+        T.check(f"{name}: lamella bonds between wall nodes of different cells, gap <= length < cutoff",
+                np.all(mol[lam[:, 0]] != mol[lam[:, 1]]) and np.all(typ[lam] == 1)
+                and L.min() >= GAP * (1 - 1e-9) and L.max() < CUTOFF, f"{L.min():.4f}..{L.max():.4f}")
+        T.check(f"{name}: lamella bonds unique", len({tuple(sorted(p)) for p in lam}) == len(lam))
+        # tributary area of every wall node: a third of its triangles' areas
+        tarea = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+        trib = np.bincount(tri.ravel(), weights=np.repeat(tarea / 3, 3), minlength=len(x))
+        nl = np.bincount(lam.ravel(), minlength=len(x))
+        T.check(f"{name}: d_alam = tributary area / lamella bonds of the node, 0 elsewhere",
+                np.allclose(alam[nl > 0] * nl[nl > 0], trib[nl > 0], rtol=1e-9)
+                and np.all(alam[nl == 0] == 0))
+        bond_area = 0.5 * (alam[lam[:, 0]] + alam[lam[:, 1]])
+        for (i, j), ar in zip(np.sort(mol[lam], axis=1), bond_area):
+            glued[(i, j)] = glued.get((i, j), 0.0) + ar
+        # facing area of A towards B, from the geometry alone: each triangle of A counts with the
+        # fraction of its nodes that lie within the cutoff of B's wall (whole triangles inside,
+        # rim triangles in part); the bond areas must sum to the mean of the two sides
+        trees = {k: cKDTree(x[np.unique(tris_of[k])]) for k in range(1, ncell + 1)}
+        worst = 0.0
+        for (i, j), ar in glued.items():
+            face = []
+            for s, o in ((i, j), (j, i)):
+                t = tris_of[s]
+                near = trees[o].query(x[t.ravel()])[0].reshape(-1, 3) < CUTOFF
+                tar = 0.5 * np.linalg.norm(np.cross(x[t[:, 1]] - x[t[:, 0]], x[t[:, 2]] - x[t[:, 0]]), axis=1)
+                face.append((tar * near.mean(1)).sum())
+            worst = max(worst, abs(ar / np.mean(face) - 1))
+        T.check(f"{name}: per pair, bond areas = mean facing area of the two sides (within 2%)",
+                worst < 0.02, f"worst {worst:.2e} over {len(glued)} pairs")
+        pairs = {tuple(p["cells"]): p for p in st["pairs"]}
+        T.check(f"{name}: glued areas as reported", all(abs(pairs[k]["glued_area"] / v - 1) < 1e-9
+                for k, v in glued.items()) and len(pairs) == len(glued))
+    nb = Counter()
+    for i, j in glued:
+        nb[i] += 1
+        nb[j] += 1
+    for cell, want in (neighbours or {}).items():
+        T.check(f"{name}: cell {cell} has {want} glued neighbours", nb[cell] == want, f"{nb[cell]}")
+    # ---- fluid: inside its own wall, >= inset from every wall, one mass
+    fl = np.nonzero(typ == 2)[0]
+    nf = len(fl)
+    if nf:
+        inside = True
+        for k in range(1, ncell + 1):
+            t = tris_of[k]
+            p = x[fl[mol[fl] == k]]
+            if len(p):
+                om = solid_angle(p, x[t[:, 0]], x[t[:, 1]], x[t[:, 2]])
+                inside &= bool(np.allclose(om, 4 * math.pi, atol=1e-6))
+        T.check(f"{name}: every fluid particle inside its own wall (solid angle 4 pi)", inside)
+        # every wall triangle within reach: candidates by barycentre, exact distance
+        tb_ = (a + b + c) / 3
+        rad = max(np.linalg.norm(a - tb_, axis=1).max(), np.linalg.norm(b - tb_, axis=1).max(),
+                  np.linalg.norm(c - tb_, axis=1).max())
+        cand = cKDTree(tb_).query_ball_point(x[fl], INSET + rad)
+        pi = np.repeat(fl, [len(cc) for cc in cand])
+        ti = np.concatenate([np.array(cc, int) for cc in cand])
+        dmin = point_triangle_distance(x[pi], a[ti], b[ti], c[ti]).min() if len(ti) else np.inf
+        T.check(f"{name}: no fluid particle within the inset ({INSET}) of any wall", dmin >= INSET - 1e-9,
+                f"nearest {dmin:.4f}")
+        T.check(f"{name}: one fluid mass rho0 spacing^3", np.allclose(rmass[fl], st["fluid_spacing"] ** 3,
+                rtol=1e-12))
+    wall = typ == 1
+    warea = np.array([c["wall_area"] for c in st["cell"]])
+    mw = np.bincount(mol[wall] - 1, weights=rmass[wall])
+    T.check(f"{name}: wall mass = areal density x wall area",
+            np.allclose(mw, st["wall_areal_density"] * warea, rtol=1e-9))
+    T.check(f"{name}: extra/special/per/atom in the header and the statistics",
+            f"extra/special/per/atom {st['extra_special_per_atom']}" in open(f"{d}/{name}.data").readline())
+    print(f"  {name}: {ncell} cells, neighbours/cell {st['neighbours_mean']:.2f} "
+          f"(max {max(nb.values(), default=0)}), "
+          f"porosity {phi:.4f}, min angle {minang:.2f} deg, max barycentre distance {bary:.3f}, reach "
+          f"{q['recommended_reach']}, K {st['extra_special_per_atom']}, fluid {nf}, lamella bonds {len(lam)}")
+    return st
+
+
+def main():
+    d = T.workdir("tissue-gen")
+    a_sc = (4.0 / 3.0 * math.pi * 30.0 ** 3) ** (1 / 3)
+    check_tissue(d, "sc2", ["--lattice", "sc", "--n", 2, 2, 2, "--nfluid", 100],
+                 neighbours={k: 3 for k in range(1, 9)}, box_volume=(2 * a_sc) ** 3)
+    check_tissue(d, "sc3", ["--lattice", "sc", "--n", 3, 3, 3, "--nfluid", 60], neighbours={14: 6},
+                 box_volume=(3 * a_sc) ** 3)
+    check_tissue(d, "bcc3", ["--lattice", "bcc", "--n", 3, 3, 3, "--nfluid", 0], neighbours={27: 14})
+    check_tissue(d, "fcc", ["--lattice", "fcc", "--n", 2, 2, 1, "--nfluid", 60])
+    check_tissue(d, "hex", ["--lattice", "hex", "--n", 2, 2, 2, "--nfluid", 60])
+    check_tissue(d, "hexair", ["--lattice", "hex", "--n", 2, 2, 1, "--elongate", 1, 1, 2, "--air", 0.21,
+                               "--nfluid", 60], porosity=0.21)
+    check_tissue(d, "random", ["--random", 12, "--lloyd", 3, "--seed", 7, "--nfluid", 100])
+    with open(f"{d}/laguerre.txt", "w") as f:
+        f.write("# x y z r\n0 0 0 30\n62 0 0 24\n\n28 52 0 28\n")
+    check_tissue(d, "laguerre", ["--centres", "laguerre.txt", "--nfluid", 80], neighbours={1: 2, 2: 2, 3: 2})
+    # bad inputs: a non-zero exit and a message that names the option or the line
+    with open(f"{d}/bad.txt", "w") as f:
+        f.write("0 0 0\n60 0 0\n1 2 x\n")
+    with open(f"{d}/close.txt", "w") as f:
+        f.write("0 0 0\n4 0 0\n")
+    for args, want in ((["--lattice", "sc", "--n", 2, 2], "--n needs three positive integers"),
+                       (["--lattice", "sc", "--gap", 0], "--gap must be > 0"),
+                       (["--centres", "bad.txt"], "bad.txt line 3"),
+                       (["--centres", "close.txt"], "closer than twice the gap"),
+                       (["--lattice", "sc", "--bond-cutoff", 2], "--bond-cutoff must exceed --gap")):
+        rc, out = gen(d, "bad", *args)
+        T.check(f"bad input {' '.join(map(str, args))}: refused with '{want}'", rc != 0 and want in out,
+                out.strip().splitlines()[-1] if out.strip() else "")
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()
