@@ -388,14 +388,18 @@ def power_cells(seeds, radii, lo, hi):
     return cells
 
 
-def gauge_radius(u, normals, depth, p):
-    """Radial gauge of the rounded polyhedron: r(u) = [sum_k max(0, u.n_k/d_k)^p]^(-1/p).
+def gauge_radius(u, normals, depth, p, dome=None):
+    """Radial gauge of the rounded polyhedron: r(u) = [sum_k max(0, u.n_k/d_k)^p + R^-p]^(-1/p).
 
-    u (C, V, 3) unit directions, normals (C, K, 3), depth (C, K) > 0 (padding: normal 0);
-    scaled by the nearest plane's depth so the powers stay within range."""
-    dmin = depth.min(axis=1)[:, None, None]
+    u (C, V, 3) unit directions, normals (C, K, 3), depth (C, K) > 0 (padding: normal 0); dome (C,)
+    the radius R of a sphere about the centre that bounds the cell where it has no neighbour (inf:
+    none); scaled by the nearest plane's depth so the powers stay within range."""
+    dmin = np.minimum(depth.min(axis=1), dome if dome is not None else np.inf)[:, None, None]
     t = np.maximum(np.einsum("cvj,ckj->cvk", u, normals) * (dmin / depth[:, None, :]), 0.0)
-    return dmin[:, :, 0] * np.sum(t ** p, axis=2) ** (-1.0 / p)
+    tp = np.sum(t ** p, axis=2)
+    if dome is not None:
+        tp = tp + (dmin[:, :, 0] / dome[:, None]) ** p
+    return dmin[:, :, 0] * tp ** (-1.0 / p)
 
 
 def wall_quality(x, tri):
@@ -483,6 +487,8 @@ def build_tissue(args):
     R = 30.0 if R is None else R
     if args.gap <= 0:
         tfail(f"--gap must be > 0, got {args.gap:g}")
+    if args.dome <= 0:
+        tfail(f"--dome must be > 0 (dome radius over the cell's equivalent radius), got {args.dome:g}")
     if args.sharpness < 2:
         tfail(f"--sharpness must be >= 2, got {args.sharpness:g}")
     if args.smooth < 0:
@@ -555,11 +561,24 @@ def build_tissue(args):
     nv, kmax = len(unit), max(len(c["normals"]) for c in cells)
     centres = np.array([c["centroid"] for c in cells])
     normals, depth = np.zeros((ncell, kmax, 3)), np.full((ncell, kmax), np.inf)
+    # The tissue's free surface. "cut": the block's faces are flat, as a sample cut from a fruit.
+    # "round" (default): a cell without a neighbour on a side is bounded there by a sphere of its
+    # equivalent radius about its centre instead: a dome that turgor stretches as much as the wall
+    # of a single cell. A flat free face cannot carry a pressure without bulging, and inflation
+    # would first have to stretch it into a dome (to 16% for a 48 um face at 364 kPa in the
+    # stiff wall, four times the tethers' critical stretch of 4%): the outer walls would start a
+    # compression already torn. Faces between cells are balanced by the neighbour's turgor and
+    # stay flat.
+    dome = np.full(ncell, np.inf)
     for i, c in enumerate(cells):
-        k = len(c["normals"])
-        normals[i, :k] = c["normals"]
-        depth[i, :k] = c["offsets"] - c["normals"] @ centres[i] - 0.5 * args.gap
-        if depth[i, :k].min() <= 0:
+        keep = np.ones(len(c["normals"]), bool)
+        if args.surface == "round" and (c["nbr"] < 0).any():
+            keep = c["nbr"] >= 0
+            dome[i] = args.dome * (3.0 * c["volume"] / (4.0 * math.pi)) ** (1.0 / 3.0)
+        k = int(keep.sum())
+        normals[i, :k] = c["normals"][keep]
+        depth[i, :k] = c["offsets"][keep] - c["normals"][keep] @ centres[i] - 0.5 * args.gap
+        if k and depth[i, :k].min() <= 0:
             tfail(f"cell {i + 1} is thinner than the gap ({args.gap:g}) around its centroid "
                   f"{centres[i]}: lower --gap or spread the seeds")
     p = args.sharpness
@@ -567,7 +586,7 @@ def build_tissue(args):
     def onto(x):  # radial projection onto the rounded cells
         r = x - centres[:, None, :]
         u = r / np.linalg.norm(r, axis=2)[..., None]
-        return centres[:, None, :] + u * gauge_radius(u, normals, depth, p)[..., None]
+        return centres[:, None, :] + u * gauge_radius(u, normals, depth, p, dome)[..., None]
 
     x = onto(np.broadcast_to(unit, (ncell, nv, 3)) + centres[:, None, :])
     deg = np.bincount(edges.ravel(), minlength=nv)
@@ -780,6 +799,10 @@ def main(argv=None):
     t.add_argument("--level", type=int, default=3, help="icosphere level of each wall (default 3)")
     t.add_argument("--gap", type=float, default=2.56, help="wall-wall gap (default 2.56 um)")
     t.add_argument("--sharpness", type=float, default=16.0, help="edge rounding exponent p (16)")
+    t.add_argument("--surface", choices=("round", "cut"), default="round",
+                   help="free surface of the block: domed cells (round) or flat faces (cut)")
+    t.add_argument("--dome", type=float, default=1.0,
+                   help="round surface: dome radius / the cell's equivalent radius (1.0)")
     t.add_argument("--smooth", type=int, default=100, help="tangential smoothing iterations (100)")
     t.add_argument("--min-angle", type=float, default=20.0, help="smallest triangle angle allowed (20)")
     t.add_argument("--air", "--porosity", type=float, help="target porosity (intercellular air)")
