@@ -246,8 +246,9 @@ def main():
     check_tissue(d, "bcc3", ["--lattice", "bcc", "--n", 3, 3, 3, "--nfluid", 0], neighbours={27: 14})
     check_tissue(d, "fcc", ["--lattice", "fcc", "--n", 2, 2, 1, "--nfluid", 60])
     check_tissue(d, "hex", ["--lattice", "hex", "--n", 2, 2, 2, "--nfluid", 60])
+    # air is a fraction of the cut block (domes stick out of it)
     check_tissue(d, "hexair", ["--lattice", "hex", "--n", 2, 2, 1, "--elongate", 1, 1, 2, "--air", 0.21,
-                               "--nfluid", 60], porosity=0.21)
+                               "--surface", "cut", "--nfluid", 60], porosity=0.21)
     check_tissue(d, "random", ["--random", 12, "--lloyd", 3, "--seed", 7, "--nfluid", 100])
     with open(f"{d}/laguerre.txt", "w") as f:
         f.write("# x y z r\n0 0 0 30\n62 0 0 24\n\n28 52 0 28\n")
