@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: set up, then inflate a coarse stiff cell to turgor and compress it between plates to
 # 20% strain; write the force-strain data (CSV) and plots (PNG) to results/main/, and the walls as
-# VTK surfaces during the compression (walls.STEP.vtk, for ParaView).
+# VTK surfaces during the compression (walls.STEP.vtk, for ParaView). Then a coarse tissue of 2x2x2
+# glued cells, inflated and compressed to failure: tissue-stress-strain.csv/png.
 #   coarse cell: 642 wall nodes, ~460 fluid particles; LEVEL=4: the paper's 2562 + 3500;
 #   LEVEL=5: 10242 + 14000 (the paper's fine resolution); NFLUID overrides the fluid count
 set -euo pipefail
@@ -34,5 +35,22 @@ echo "compressing ..."
 run -in "$here/lammps-inputs/in.compress" -log log.compress -screen none "${model[@]}" \
   -var restart inflated.restart -var vplate 0.5 -var every 100 -var out compress.dat -var vtk 2500
 /usr/bin/python3 "$here/tools/plot_main.py" "$out"
+
+# A small coarse tissue: 2x2x2 cells glued by the middle lamella, inflated to turgor together and
+# compressed between plates to failure (tethers break at the paper's critical stretch 1.04):
+# stress-strain with the wall ruptures and lamella debonds marked (tissue-stress-strain.csv/png).
+# The coarse cell's lengths whatever LEVEL is; reach and special-list room from the generator.
+echo "tissue: generating, inflating, compressing to failure ..."
+/usr/bin/python3 "$here/tools/cellgen.py" tissue -o tissue.data --lattice sc --n 2 2 2 --level 3 \
+  --nfluid 440 --stats tissue.json > tissue-gen.txt
+read -r treach tspecial < <(/usr/bin/python3 -c "import json; s = json.load(open('tissue.json'))
+print(max(4.0, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])")
+tmodel=(-var dir "$here/lammps-inputs" -var s 6.4 -var r0 3.2 -var f0 8.0e4 -var reach "$treach")
+run -in "$here/lammps-inputs/in.tissue-inflate" -log log.tissue-inflate -screen none "${tmodel[@]}" \
+  -var data tissue.data -var special "$tspecial" -var nsteps 6000 -var every 500 \
+  -var restart_out tissue.restart
+run -in "$here/lammps-inputs/in.tissue-compress" -log log.tissue-compress -screen none "${tmodel[@]}" \
+  -var restart tissue.restart -var lamf 1.04 -var vplate 2.0 -var strain 0.3 -var vtk 4000
+/usr/bin/python3 "$here/tools/plot_tissue.py" "$out"
 echo "main job done: results in $out"
 ls "$out"/*.csv "$out"/*.png

@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""The main job's tissue part: stress-strain of a tissue block compressed to failure
+(in.tissue-compress output) as CSV and PNG, with the failure events marked: wall rupture (a cell
+loses a tether) and cells coming apart (a lamella bond lets go).
+
+  plot_tissue.py DIR [PREFIX]      reads DIR/PREFIX.dat (default tissue-compress), writes
+                                   DIR/tissue-stress-strain.csv and .png
+"""
+import sys
+
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+# columns of in.tissue-compress's fix ave/time file (after the step)
+COLS = ["time_us", "strain", "stress_kPa", "F_top_nN", "F_bottom_nN", "P_mean_kPa", "P_min_kPa",
+        "P_max_kPa", "fluid_mass_pg", "broken_tethers", "debonded_bonds", "debonded_area_um2",
+        "glued_area_um2"]
+
+
+def load(path):
+    a = np.loadtxt(path, comments="#", ndmin=2)
+    return {name: a[:, k + 1] for k, name in enumerate(COLS)}
+
+
+def smooth(y, n):
+    """Centred moving average over n samples (the plate force rings at the wall's frequencies)."""
+    if n < 2 or len(y) < n:
+        return y.copy()
+    k = np.ones(n) / n
+    pad = np.pad(y, (n // 2, n - 1 - n // 2), mode="edge")
+    return np.convolve(pad, k, mode="valid")
+
+
+def events(strain, count):
+    """Strains at which a cumulative count rises, and by how much."""
+    d = np.diff(count, prepend=count[0])
+    k = np.nonzero(d > 0)[0]
+    return strain[k], d[k]
+
+
+def main(out, prefix="tissue-compress"):
+    c = load(f"{out}/{prefix}.dat")
+    keep = c["strain"] >= 0
+    d = {k: v[keep] for k, v in c.items()}
+    # window of 1% strain: longer than the ringing of the plates, shorter than the failure
+    ds = np.median(np.diff(d["strain"])) if len(d["strain"]) > 1 else 1.0
+    n = max(1, int(round(0.01 / ds)))
+    s = smooth(d["stress_kPa"], n)
+    np.savetxt(f"{out}/tissue-stress-strain.csv",
+               np.column_stack([d[k] for k in COLS] + [s]), delimiter=",",
+               header=",".join(COLS + ["stress_smoothed_kPa"]), comments="")
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    ax.plot(d["strain"], d["stress_kPa"], color="0.75", lw=0.8, label="stress (raw)")
+    ax.plot(d["strain"], s, color="k", lw=1.8, label="stress (1% strain window)")
+    er, nr = events(d["strain"], d["broken_tethers"])
+    ed, nd = events(d["strain"], d["debonded_bonds"])
+    top = max(s.max(), 1e-9)
+    if len(er):
+        ax.scatter(er, np.interp(er, d["strain"], s), s=12 + 4 * np.sqrt(nr), color="red", zorder=3,
+                   label=f"wall rupture ({int(d['broken_tethers'][-1])} tethers)")
+        ax.axvline(er[0], color="red", ls="--", lw=0.8)
+    if len(ed):
+        ax.scatter(ed, np.interp(ed, d["strain"], s), s=12 + 4 * np.sqrt(nd), marker="s",
+                   color="tab:green", zorder=3,
+                   label=f"lamella debonding ({int(d['debonded_bonds'][-1])} bonds)")
+        ax.axvline(ed[0], color="tab:green", ls="--", lw=0.8)
+    ax.set_ylim(min(0.0, s.min()), 1.15 * top)
+    ax.set_xlabel("strain (plate travel / initial height)")
+    ax.set_ylabel("stress (top plate force / initial cross-section, kPa)")
+    ax.set_title("tissue block compressed to failure")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(f"{out}/tissue-stress-strain.png", dpi=120)
+    k = int(np.argmax(s))
+    first = [f"first rupture at strain {er[0]:.4f}" if len(er) else "no rupture",
+             f"first debond at strain {ed[0]:.4f}" if len(ed) else "no debonding"]
+    print(f"tissue: peak stress {s[k]:.4g} kPa at strain {d['strain'][k]:.4f}; " + "; ".join(first))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else ".", *sys.argv[2:3])
