@@ -110,6 +110,17 @@ void ComputeCellContacts::init_list(int /*id*/, NeighList *ptr)
   list = ptr;
 }
 
+/* ----------------------------------------------------------------------
+   fix ave/time mode vector asks a variable-length array for its row count before it reads
+   the rows; the count is known only after the rows are computed
+------------------------------------------------------------------------- */
+
+int ComputeCellContacts::lock_length()
+{
+  if (invoked_array != update->ntimestep) compute_array();
+  return size_array_rows;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void ComputeCellContacts::compute_array()

@@ -39,6 +39,7 @@ class ComputeCellContacts : public Compute {
   void init() override;
   void init_list(int, class NeighList *) override;
   void compute_array() override;
+  int lock_length() override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;

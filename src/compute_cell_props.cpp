@@ -140,6 +140,17 @@ void ComputeCellProps::wall_centres(LAMMPS *lmp, int ncells, const PairCellSPH *
       for (int d = 0; d < 3; d++) c[3 * m + d] = all[4 * m + d] / all[4 * m + 3];
 }
 
+/* ----------------------------------------------------------------------
+   fix ave/time mode vector asks a variable-length array for its row count before it reads
+   the rows; the count is known only after the rows are computed
+------------------------------------------------------------------------- */
+
+int ComputeCellProps::lock_length()
+{
+  if (invoked_array != update->ntimestep) compute_array();
+  return size_array_rows;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void ComputeCellProps::compute_array()

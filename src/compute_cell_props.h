@@ -47,6 +47,7 @@ class ComputeCellProps : public Compute {
   ~ComputeCellProps() override;
   void init() override;
   void compute_array() override;
+  int lock_length() override;
 
   // centre of each cell 1..ncells (mean of its unwrapped wall nodes) into c[3m..3m+2], the same
   // on every rank; shared with compute cell/contacts
