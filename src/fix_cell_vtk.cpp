@@ -97,7 +97,11 @@ void FixCellVTK::write()
   auto *debonded = modify->get_fix_by_id("cell_debonded");
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit) || atom->nspecial[i][0] == 0) continue;
+    // a wall node has bonds, or had them: a node whose tethers have all broken is written too,
+    // so that the broken field counts every ruptured tether (fluid has neither)
+    const bool lost = (broken && broken->vector_atom[i] > 0.0) ||
+        (debonded && debonded->vector_atom[i] > 0.0);
+    if (!(mask[i] & groupbit) || (atom->nspecial[i][0] == 0 && !lost)) continue;
     double xu[3];
     domain->unmap(x[i], atom->image[i], xu);
     mine.insert(mine.end(),
