@@ -36,7 +36,7 @@ SHORT = {
                                      settled="turgor-short.restart", strain=0.005)),
     # the tissue inputs continue from the pair in.tissue-inflate writes; special (room for the
     # lamella's special neighbours) is the generator's, filled in by main()
-    "in.tissue-inflate": ("pair.data", dict(COARSE, nsteps=600, every=200,
+    "in.tissue-inflate": ("pair.data", dict(COARSE, nsteps=600, nsettle=200, every=200,
                                             restart_out="pair-short.restart")),
     "in.tissue-compress": ("pair.data", dict(COARSE, restart="pair-short.restart", vplate=4,
                                              strain=0.02, every=50, tabevery=100, leakevery=100,

@@ -25,6 +25,7 @@ import numpy as np
 import lmptest as T
 
 COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+INFLATE, SETTLE = 1500, 500   # in.tissue-inflate's steps: inflation, then the settle
 CONT = """
 variable        restart index three.restart
 include         ${dir}/tissue-restart.lmp
@@ -137,7 +138,7 @@ def restart(d, common):
         DUMP.format(name="full.dump") + DEBOND_ROWS
     _, logf = T.lmp(full, cwd=d, nprocs=2, variables=dict(pull, lamlog="full.log"), log="log.full")
     # the continued run appends to a copy of the first half's debond log
-    split = 1500 + 150   # the inflation's 1500 steps, then the first half
+    split = INFLATE + SETTLE + 150   # the inflation's steps, then the first half
     half = [ln for ln in open(f"{d}/full.log") if ln.startswith("#") or int(ln.split()[0]) <= split]
     with open(f"{d}/cont.log", "w") as f:
         f.writelines(half)
@@ -249,10 +250,11 @@ def main():
               "--nfluid", 440, cwd=d)
     special = json.load(open(os.path.join(d, "three.json")))["extra_special_per_atom"]
     common = dict(COARSE, dir=T.INPUTS, Pi=-364.0, Lp=1.0e-9, special=special)
-    # inflated part way (1500 steps at Lp 10): the walls stretched, the lamella loaded, the
+    # inflated part way (at Lp 10) and settled: the walls stretched, the lamella loaded, the
     # cells in contact
     T.lmp(f"{T.INPUTS}/in.tissue-inflate", cwd=d,
-          variables=dict(common, Lp=10.0, data="three.data", nsteps=1500, every=500, restart_out="three.restart"),
+          variables=dict(common, Lp=10.0, data="three.data", nsteps=INFLATE, nsettle=SETTLE, every=500,
+                         restart_out="three.restart"),
           log="log.inflate")
     step0(d, common)
     restart(d, common)

@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# Tissue experiments in one command, with a report (tools/tissue/report.py):
+#   1. pair: two glued cells stacked along z pressed to 10% and pulled apart (in.tissue-pair), and a
+#      single cell of the same size pressed alone: force vs strain, contact and glued area,
+#      pull-off force, work of separation against Gc x glued area;
+#   2. block: 3x3x3 cells inflated at two turgors (Pi -364 and -100 kPa), each compressed to 30%
+#      with a strong (sigl 300 kPa, Gl 1 J/m^2) and a weak (30 kPa, 0.1 J/m^2) middle lamella
+#      (in.tissue-compress, lamf 1.04): stress-strain, modulus, failure strain and mode;
+#   3. impact: the turgid block (Pi -364) hit at 5, 10, 20 m/s (in.tissue-impact): bruise
+#      (ruptured cells, debonded area, fluid lost) against the impact energy.
+#   RES=coarse bash tools/tissue.sh   # level-3 walls (642 nodes), 27-cell block (default; ~20 min on 2 cores)
+#   RES=small  bash tools/tissue.sh   # quick check: 8-cell block (2x2x2), shorter runs (a few minutes)
+#   RES=coarse REPORT=docs bash tools/tissue.sh   # the committed report: docs/tissue.md, docs/tissue/*.png,
+#                                                 # docs/tissue-summary.json
+# Environment: OUT (run folder, default results/tissue-$RES), NP (MPI ranks per run, default 1),
+#   JOBS (runs at a time, default 2), ONLY (space-separated stage names), RESUME=1 (skip stages
+#   already done), REPORT (report folder; default $OUT; "docs" = the repository's docs/),
+#   INPUTS (folder of the input scripts, default lammps-inputs).
+# Every LAMMPS run has its own sub-folder of $OUT (its log, data files, pictures, VTK surfaces); the
+# wall time of each stage is in $OUT/times.txt.
+set -euo pipefail
+here=${CELLMECH_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
+[ -f "$here/build/cellmech-env.sh" ] || bash "$here/tools/setup.sh"
+source "$here/build/cellmech-env.sh"
+RES=${RES:-coarse}
+NP=${NP:-1}
+JOBS=${JOBS:-2}
+INPUTS=$(cd "${INPUTS:-$here/lammps-inputs}" && pwd)
+py=/usr/bin/python3
+# per resolution: block size, inflation steps, compression (speed, strain), impact (strain, hold),
+# pull travel, every (compress), table interval
+case "$RES" in
+  coarse) NB="3 3 3"; NINFL=6000; VC=2; EPSC=0.3; EPSI=0.15; HOLDI=10; PULL=40; EVC=200; TAB=1000 ;;
+  small)  NB="2 2 2"; NINFL=3000; VC=4; EPSC=0.2; EPSI=0.1;  HOLDI=2;  PULL=20; EVC=100; TAB=500 ;;
+  *) echo "RES must be coarse or small, got '$RES'" >&2; exit 2 ;;
+esac
+out=${OUT:-$here/results/tissue-$RES}
+case "${REPORT:-}" in
+  "") report=$out; figs=$out ;;
+  docs) report=$here/docs; figs=$here/docs/tissue ;;
+  *) mkdir -p "$REPORT"; report=$(cd "$REPORT" && pwd); figs=$report/tissue ;;
+esac
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+cd "$out"
+
+lmp() { if [ "$NP" -gt 1 ]; then mpirun --allow-run-as-root --oversubscribe -np "$NP" "$LMP" "$@"; else "$LMP" "$@"; fi; }
+want() { [ -z "${ONLY:-}" ] || [[ " $ONLY " == *" $1 "* ]]; }
+# stage NAME CMD...: run once in $out/NAME, record the wall time in times.txt; a failed stage is
+# recorded and skipped
+stage() {
+  local name=$1; shift
+  want "$name" || return 0
+  if [ "${RESUME:-0}" = 1 ] && grep -q "^$name .* ok$" "$out/times.txt" 2>/dev/null; then return 0; fi
+  local t0 rc=0; t0=$(date +%s)
+  echo "$(date -u +%H:%M:%S) $name ..."
+  mkdir -p "$out/$name"
+  (cd "$out/$name" && "$@") || rc=$?
+  local st=ok; [ $rc -eq 0 ] || st="failed(rc=$rc)"
+  echo "$name $(( $(date +%s) - t0 )) $st" >> "$out/times.txt"
+  [ $rc -eq 0 ] && echo "$(date -u +%H:%M:%S) $name done ($(( $(date +%s) - t0 )) s)" \
+    || echo "  $name failed, see $out/$name/log.lammps" >&2
+  return 0
+}
+# bg NAME CMD...: stage in the background, at most JOBS at a time (the runs are independent)
+bg() { while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done; stage "$@" & }
+
+# ---- the cells: generator, with its recommended reach and the room for special neighbours
+gen() {
+  $py "$here/tools/cellgen.py" tissue -o "$1.data" --lattice sc --n $2 --level 3 --nfluid 440 \
+    --stats "$1.json" > "$1.txt"
+}
+gen_all() { gen block "$NB" && gen pair "1 1 2" && gen single "1 1 1"; }
+stage gen gen_all
+params() {  # reach special of a generated tissue
+  $py -c "import json; s = json.load(open('$out/gen/$1.json'))
+print(max(4.0, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])"
+}
+read -r reach_b special_b < <(params block)
+read -r reach_p special_p < <(params pair)
+read -r reach_s special_s < <(params single)
+# the coarse level-3 cell's lengths (tools/main-job.sh): s, r0, f0; reach from the generator
+model() { echo -var dir "$INPUTS" -var s 6.4 -var r0 3.2 -var f0 8.0e4 -var reach "$1"; }
+# frames: dump image / VTK interval for ~4 frames of a compression to strain EPS at V m/s, from the
+# block's generated height (the inflated block is a few % taller)
+frames() {
+  $py -c "import json; s = json.load(open('$out/gen/block.json')); b = s['tissue_box']
+H = 1.05 * (b[5] - b[4]); n = ($1 * H + 0.4) / $2 / 0.001 + $3 / 0.001
+print(int(round(n / 4 / 100.0)) * 100)"
+}
+{ echo "# RES=$RES NP=$NP JOBS=$JOBS block='$NB' NINFL=$NINFL vcompress=$VC strain=$EPSC impact_strain=$EPSI hold=$HOLDI pull=$PULL"
+  echo "# reach block=$reach_b pair=$reach_p single=$reach_s; special block=$special_b pair=$special_p single=$special_s"
+  echo "# started $(date -u '+%Y-%m-%d %H:%M:%S UTC') on $(nproc) cores"; } > run-info.txt
+echo "RES=$RES: block $NB, output in $out, report in $report"
+
+# ---- inflations (Pi -364 and -100 kPa for the block; the pair and the single cell at -364)
+infl() {  # DATA PI RESTART_OUT REACH SPECIAL
+  lmp -in "$INPUTS/in.tissue-inflate" -screen none $(model "$4") -var data "$out/gen/$1.data" \
+    -var special "$5" -var Pi "$2" -var nsteps $NINFL -var every 500 -var restart_out "$3"
+}
+bg inflate-364 infl block -364 tissue.restart "$reach_b" "$special_b"
+bg inflate-100 infl block -100 tissue.restart "$reach_b" "$special_b"
+bg inflate-pair infl pair -364 pair.restart "$reach_p" "$special_p"
+bg inflate-single infl single -364 pair.restart "$reach_s" "$special_s"
+wait
+
+# ---- block compressions (4), impacts (3), pair press and pull, single press: two at a time
+fc=$(frames $EPSC $VC 0)
+comp() {  # PI SIGL GL NAME
+  lmp -in "$INPUTS/in.tissue-compress" -screen none $(model "$reach_b") -var special "$special_b" \
+    -var restart "$out/inflate${1}/tissue.restart" -var Pi "$1" -var lamf 1.04 -var vplate $VC \
+    -var strain $EPSC -var sigl "$2" -var Gl "$3" -var every $EVC -var tabevery $TAB \
+    -var img "$fc" -var vtk "$fc" -var imgprefix "$4"
+}
+imp() {  # V
+  lmp -in "$INPUTS/in.tissue-impact" -screen none $(model "$reach_b") -var special "$special_b" \
+    -var restart "$out/inflate-364/tissue.restart" -var Pi -364 -var lamf 1.04 -var vplate "$1" \
+    -var strain $EPSI -var hold $HOLDI -var sigl 300 -var Gl 1000 -var tabevery $TAB \
+    -var img "$(frames $EPSI "$1" $HOLDI)" -var imgprefix "impact-$1"
+}
+pairrun() {  # NCELL REACH
+  lmp -in "$INPUTS/in.tissue-pair" -screen none $(model "$2") -var ncell "$1" -var Pi -364 \
+    -var restart "$out/inflate-$3/pair.restart" -var pull $PULL -var sigl 300 -var Gl 1000
+}
+bg compress-364-strong comp -364 300 1000 compress-364-strong
+bg compress-100-strong comp -100 300 1000 compress-100-strong
+bg compress-364-weak comp -364 30 100 compress-364-weak
+bg compress-100-weak comp -100 30 100 compress-100-weak
+for v in 5 10 20; do bg impact-$v imp $v; done
+bg pair pairrun 2 "$reach_p" pair
+bg single pairrun 1 "$reach_s" single
+wait
+
+echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
+want report && $py "$here/tools/tissue/report.py" --run "$out" --res "$RES" --report "$report" --figs "$figs"
+echo "tissue done: $out (report $report/tissue.md)"

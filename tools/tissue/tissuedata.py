@@ -1,0 +1,115 @@
+"""Readers and analysis helpers for the tissue experiments (tools/tissue.sh, tools/tissue/report.py).
+
+Units are LAMMPS units micro: um, us, pg, nN, kPa; energy nN um = 1e-15 J (fJ); Gc in pg/us^2
+(1000 pg/us^2 = 1 J/m^2), so Gc x area (um^2) is in nN um as well.
+"""
+import json
+import os
+
+import numpy as np
+
+# fix ave/time files of the inputs (after the step column)
+COMPRESS = ["time_us", "strain", "stress_kPa", "F_top_nN", "F_bottom_nN", "P_mean_kPa", "P_min_kPa",
+            "P_max_kPa", "fluid_mass_pg", "broken_tethers", "debonded_bonds", "debonded_area_um2",
+            "glued_area_um2"]
+LEAKS = ["time_us", "strain", "leaked_particles"]
+INFLATE = ["time_us", "volume_um3", "fluid_mass_pg", "P_mean_kPa", "P_min_kPa", "P_max_kPa",
+           "stretch_mean", "lamella_bonds", "glued_area_um2", "broken_tethers", "debonded_bonds"]
+PRESS = ["time_us", "strain", "F_top_nN", "F_bottom_nN", "P1_kPa", "P2_kPa", "contact_area_um2",
+         "glued_area_um2", "F_interface_nN", "debonded_bonds", "debonded_area_um2"]
+PULL = ["separation_um", "F_pull_nN", "F_hold_nN", "P1_kPa", "P2_kPa", "contact_area_um2",
+        "glued_area_um2", "F_interface_nN", "lamella_bonds", "debonded_bonds", "debonded_area_um2"]
+# compute cell/props (17) and cell/contacts (11) columns
+PROPS = ["volume", "wall_area", "pressure", "fluid_mass", "fluid_count", "stretch_mean", "stretch_max",
+         "F_equator", "leaked", "cx", "cy", "cz", "broken_tethers", "lamella_bonds", "glued_area",
+         "debonded_bonds", "debonded_area"]
+PAIRS = ["i", "j", "lamella_bonds", "glued_area", "debonded_bonds", "debonded_area", "F_lamella",
+         "F_contact", "contacts", "contact_area", "distance"]
+
+
+def load(path, cols):
+    """A fix ave/time scalar file as {name: column}, with 'step'."""
+    a = np.loadtxt(path, comments="#", ndmin=2)
+    d = {"step": a[:, 0]}
+    for k, name in enumerate(cols):
+        d[name] = a[:, k + 1] if a.shape[1] > k + 1 else np.zeros(len(a))
+    return d
+
+
+def load_table(path):
+    """A fix ave/time mode vector file: list of (step, rows array without the row index)."""
+    out = []
+    with open(path) as f:
+        lines = [ln for ln in f if not ln.startswith("#")]
+    i = 0
+    while i < len(lines):
+        w = lines[i].split()
+        i += 1
+        if len(w) != 2:
+            continue
+        step, n = int(float(w[0])), int(w[1])
+        rows = [list(map(float, lines[i + k].split()[1:])) for k in range(n)]
+        i += n
+        out.append((step, np.array(rows) if rows else np.zeros((0, 1))))
+    return out
+
+
+def write_csv(path, d, cols, header=""):
+    a = np.column_stack([d[c] for c in cols])
+    np.savetxt(path, a, delimiter=",", header=(header + "\n" if header else "") + ",".join(cols),
+               comments="# " if header else "", fmt="%.8g")
+
+
+def smooth(y, n):
+    """Centred moving average over n samples (edges padded with the end values)."""
+    n = int(n)
+    if n < 2 or len(y) < n:
+        return np.asarray(y, float).copy()
+    pad = np.pad(y, (n // 2, n - 1 - n // 2), mode="edge")
+    return np.convolve(pad, np.ones(n) / n, mode="valid")
+
+
+def first_rise(x, count):
+    """x at the first record where a cumulative count exceeds its starting value (None if never)."""
+    k = np.nonzero(count > count[0] + 0.5)[0]
+    return (float(x[k[0]]), int(k[0])) if len(k) else (None, None)
+
+
+def gen_stats(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def times(run):
+    t = {}
+    p = os.path.join(run, "times.txt")
+    if os.path.exists(p):
+        for line in open(p):
+            w = line.split()
+            if len(w) >= 3:
+                t[w[0]] = (int(w[1]), w[2])
+    return t
+
+
+def integral(y, x):
+    y, x = np.asarray(y, float), np.asarray(x, float)
+    if len(x) < 2:
+        return 0.0
+    return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(x)))
+
+
+def dominant_period(y, dx, longest=None):
+    """Period (in units of dx) of the strongest oscillation of y about its running trend (the trend: a
+    moving average over a quarter of the record), periods up to `longest` (default a third of it)."""
+    y = np.asarray(y, float)
+    n = len(y)
+    if n < 16:
+        return None
+    r = y - smooth(y, max(2, n // 4))
+    P = np.abs(np.fft.rfft(r * np.hanning(n))) ** 2
+    f = np.fft.rfftfreq(n, dx)
+    longest = longest or n * dx / 3
+    m = (f > 1.0 / longest)
+    if not m.any():
+        return None
+    return float(1.0 / f[m][np.argmax(P[m])])
