@@ -7,11 +7,18 @@
 #ifndef CELLMECH_CELL_COMPAT_H
 #define CELLMECH_CELL_COMPAT_H
 
+#include "domain.h"
+
 #include <string>
 
 namespace LAMMPS_NS {
 class LAMMPS;
 }
+
+// LAMMPS_VERSION_NUMBER (YYYYMMDD) is set by CMakeLists.txt from the LAMMPS tree's version.h.
+#ifndef LAMMPS_VERSION_NUMBER
+#error "LAMMPS_VERSION_NUMBER must be defined (CMakeLists.txt reads it from version.h)"
+#endif
 
 namespace CellMech {
 
@@ -24,6 +31,21 @@ struct BuildSignature {
 };
 
 BuildSignature compiled_signature();
+
+// Domain::minimum_image takes the caller's file and line since LAMMPS 12 Jun 2025 (lammps/lammps
+// pull request 4610), for its error message; one call for every release:
+// CellMech::minimum_image(domain, FLERR, dx, dy, dz).
+inline void minimum_image(const LAMMPS_NS::Domain *domain, const char *file, int line, double &dx,
+                          double &dy, double &dz)
+{
+#if LAMMPS_VERSION_NUMBER >= 20250612
+  domain->minimum_image(file, line, dx, dy, dz);
+#else
+  (void) file;
+  (void) line;
+  domain->minimum_image(dx, dy, dz);
+#endif
+}
 // Empty string when the running LAMMPS matches; otherwise one line per difference.
 std::string compat_mismatch(LAMMPS_NS::LAMMPS *lmp, const BuildSignature &built);
 

@@ -22,6 +22,8 @@
 
 #include "compute_cell_props.h"
 
+#include "cell_compat.h"
+
 #include "atom.h"
 #include "bond.h"
 #include "bond_cell_tether.h"
@@ -175,7 +177,7 @@ void ComputeCellProps::compute_array()
 
   auto rel = [&](int i, tagint m, double *out) {
     for (int d = 0; d < 3; d++) out[d] = x[i][d] - c[3 * m + d];
-    domain->minimum_image(out[0], out[1], out[2]);
+    CellMech::minimum_image(domain, FLERR, out[0], out[1], out[2]);
   };
 
   // A broken tether takes its two triangles out of the wall (bond style cell/tether): after a
@@ -314,7 +316,7 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
     for (int k = 0; k < 3; k++) {
       double p[3];
       for (int d = 0; d < 3; d++) p[d] = x[anglelist[n][k]][d] - c[3 * m + d];
-      domain->minimum_image(p[0], p[1], p[2]);
+      CellMech::minimum_image(domain, FLERR, p[0], p[1], p[2]);
       mine.insert(mine.end(), p, p + 3);
     }
   }
@@ -358,7 +360,7 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
       continue;
     double p[3];
     for (int d = 0; d < 3; d++) p[d] = x[i][d] - c[3 * m + d];
-    domain->minimum_image(p[0], p[1], p[2]);
+    CellMech::minimum_image(domain, FLERR, p[0], p[1], p[2]);
     if (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] < rin_sq[m]) continue;
     double omega = 0.0;
     for (int t = start[m]; t < start[m + 1]; t++) {

@@ -1,7 +1,16 @@
 #!/usr/bin/env bash
-# Set up (or reuse) everything and run the whole test suite with CTest.
+# Set up (or reuse) everything and run the whole test suite with CTest against the default LAMMPS
+# release (tools/setup.sh), then the unit tests and short cell runs against the other release the
+# package supports, built beside it (build-VERSION/). OTHER_LAMMPS=0 skips the second part.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$here/tools/setup.sh"
-cd "$here/build"
-ctest --output-on-failure -j "${JOBS:-$(nproc)}" "$@"
+(cd "$here/build" && ctest --output-on-failure -j "${JOBS:-$(nproc)}" "$@")
+if [ "${OTHER_LAMMPS:-1}" = 1 ]; then
+  default=$(sed -n 's/^LAMMPS_VERSION=${LAMMPS_VERSION:-\([0-9]*\)}$/\1/p' "$here/tools/setup.sh")
+  [ "${LAMMPS_VERSION:-$default}" = 20250204 ] && other=20260704 || other=20250204
+  echo "== the other supported LAMMPS release: $other (unit tests, plugin guard, short runs of every example)"
+  LAMMPS_VERSION=$other CELLMECH_BUILD_DIR=build-$other bash "$here/tools/setup.sh"
+  (cd "$here/build-$other" && ctest --output-on-failure -j "${JOBS:-$(nproc)}" \
+    -R '^(physics|styles|plugin_guard|examples|cell_mpi_restart)$')
+fi

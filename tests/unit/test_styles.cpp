@@ -790,6 +790,7 @@ TEST_F(Lamella, NeedsAreaAndReference)
 
 // ---------------------------------------------------------------- plugin guard
 
+// Run alone (tests/CMakeLists.txt: ctest's plugin_guard): no other plugin may be loaded first.
 TEST(PluginGuard, RefusesForeignLammps)
 {
   const char *args[] = {"lmp", "-log", "none", "-echo", "none", nullptr};
