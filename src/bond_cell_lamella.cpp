@@ -20,6 +20,8 @@
 
 #include "bond_cell_lamella.h"
 
+#include "cell_compat.h"
+
 #include "atom.h"
 #include "cell_physics.h"
 #include "comm.h"
@@ -331,6 +333,7 @@ void BondCellLamella::add_break_fix()
 
 void BondCellLamella::init_style()
 {
+  CellMech::require_unit_consistency(lmp, "Bond style cell/lamella");
   if (!atom->molecule_flag)
     error->all(FLERR,
                "Bond style cell/lamella requires molecule IDs (the cells), e.g. atom_style "

@@ -11,6 +11,8 @@
 
 #include "bond_cell_tether.h"
 
+#include "cell_compat.h"
+
 #include "atom.h"
 #include "cell_physics.h"
 #include "comm.h"
@@ -269,6 +271,7 @@ void BondCellTether::add_break_fix()
 
 void BondCellTether::init_style()
 {
+  CellMech::require_unit_consistency(lmp, "Bond style cell/tether");
   checked = 0;
   int flag, cols;
   iref = atom->find_custom(REF_NAME, flag, cols);

@@ -4,7 +4,10 @@
 
 #include "cell_compat.h"
 
+#include "error.h"
+#include "force.h"
 #include "lammps.h"
+#include "update.h"
 #include "library.h"
 #include "lmptype.h"
 #include "platform.h"
@@ -76,6 +79,17 @@ std::string compat_mismatch(LAMMPS *lmp, const BuildSignature &built)
     why += "  MPI standard: plugin " + std::to_string(built.mpi_major) + ", LAMMPS " +
         std::to_string(major) + "\n";
   return why;
+}
+
+void require_unit_consistency(LAMMPS *lmp, const std::string &style)
+{
+  const Force *force = lmp->force;
+  if (force->ftm2v != 1.0 || force->nktv2p != 1.0 || force->mvv2e != 1.0)
+    lmp->error->all(FLERR,
+                    "{} does not support units {}: the cell model applies no unit conversion "
+                    "(ftm2v {:.6g}, nktv2p {:.6g}, mvv2e {:.6g}, all must be 1); use units micro "
+                    "(the model's parameters are given in it), or nano, si, cgs",
+                    style, lmp->update->unit_style, force->ftm2v, force->nktv2p, force->mvv2e);
 }
 
 }    // namespace CellMech

@@ -32,6 +32,11 @@ struct BuildSignature {
 
 BuildSignature compiled_signature();
 
+// The styles compute forces, pressures and energies without LAMMPS's unit conversion factors, which
+// is right only where those are 1 (units micro, nano, si, cgs, lj); any other unit style is an
+// error naming the style.
+void require_unit_consistency(LAMMPS_NS::LAMMPS *lmp, const std::string &style);
+
 // Domain::minimum_image takes the caller's file and line since LAMMPS 12 Jun 2025 (lammps/lammps
 // pull request 4610), for its error message; one call for every release:
 // CellMech::minimum_image(domain, FLERR, dx, dy, dz).

@@ -23,6 +23,8 @@
 
 #include "fix_cell_fluid.h"
 
+#include "cell_compat.h"
+
 #include "atom.h"
 #include "cell_physics.h"
 #include "comm.h"
@@ -117,8 +119,10 @@ int FixCellFluid::modify_param(int narg, char **arg)
 
 void FixCellFluid::init()
 {
+  CellMech::require_unit_consistency(lmp, "Fix cell/fluid");
   sph = dynamic_cast<PairCellSPH *>(force->pair_match("^cell/sph", 0));
   if (!sph) error->all(FLERR, "Fix cell/fluid requires pair style cell/sph (alone or in hybrid)");
+  check_group();
   if (!atom->rmass_flag)
     error->all(FLERR, "Fix cell/fluid requires per-atom masses (rmass in fix property/atom)");
   if (!force->newton_bond)
@@ -141,6 +145,37 @@ void FixCellFluid::init()
                  "level (e.g. run_style respa 2 2 bond 1 angle 1 pair 2)");
   }
   grow_cells();
+}
+
+/* ----------------------------------------------------------------------
+   the fix advances the density and mass of the fluid (cell/sph types) in its group: a group with
+   none would silently do nothing, and two fixes sharing atoms would advance them twice per step
+------------------------------------------------------------------------- */
+
+void FixCellFluid::check_group()
+{
+  int *mask = atom->mask, *type = atom->type;
+  bigint fluid_local = 0, fluid = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && sph->setflag[type[i]][type[i]]) fluid_local++;
+  MPI_Allreduce(&fluid_local, &fluid, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (fluid == 0)
+    error->all(FLERR,
+               "Fix cell/fluid {}: group {} holds no fluid particles (atoms of a type with "
+               "pair_coeff T T cell/sph); the fix would do nothing",
+               id, group->names[igroup]);
+  for (auto *other : modify->get_fix_by_style("^cell/fluid$")) {
+    if (other == this) continue;
+    bigint shared_local = 0, shared = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((mask[i] & groupbit) && (mask[i] & other->groupbit)) shared_local++;
+    MPI_Allreduce(&shared_local, &shared, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (shared)
+      error->all(FLERR,
+                 "Fix cell/fluid {} and fix cell/fluid {} both act on {} atoms (groups {} and {}): "
+                 "each would advance their density and mass; use one fix per fluid",
+                 id, other->id, shared, group->names[igroup], group->names[other->igroup]);
+  }
 }
 
 void FixCellFluid::grow_cells()

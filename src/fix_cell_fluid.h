@@ -43,6 +43,7 @@ class FixCellFluid : public Fix {
   class PairCellSPH *sph;
 
   void grow_cells();
+  void check_group();
   void cell_geometry();
 };
 

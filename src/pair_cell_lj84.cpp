@@ -9,6 +9,8 @@
 
 #include "pair_cell_lj84.h"
 
+#include "cell_compat.h"
+
 #include "atom.h"
 #include "cell_physics.h"
 #include "comm.h"
@@ -188,6 +190,7 @@ void PairCellLJ84::require_ghost_velocities()
 
 void PairCellLJ84::init_style()
 {
+  CellMech::require_unit_consistency(lmp, "Pair style cell/lj84");
   require_ghost_velocities();
   neighbor->add_request(this);
 }

@@ -19,6 +19,8 @@
 
 #include "pair_cell_sph.h"
 
+#include "cell_compat.h"
+
 #include "atom.h"
 #include "cell_physics.h"
 #include "comm.h"
@@ -333,6 +335,7 @@ void PairCellSPH::coeff(int narg, char **arg)
 
 void PairCellSPH::init_style()
 {
+  CellMech::require_unit_consistency(lmp, "Pair style cell/sph");
   if (!atom->rmass_flag)
     error->all(FLERR,
                "Pair style cell/sph requires per-atom masses: add rmass to the fix property/atom "

@@ -18,6 +18,8 @@
 
 #include "pair_cell_virtual.h"
 
+#include "cell_compat.h"
+
 #include "atom.h"
 #include "atom_vec.h"
 #include "cell_physics.h"
@@ -77,6 +79,12 @@ void PairCellVirtual::compute(int eflag, int vflag)
                  "central node, beyond reach {}; increase reach in pair_style cell/virtual",
                  tag[a], tag[b], tag[c], sqrt(ox * ox + oy * oy + oz * oz), reach);
     const int btype = type[b];
+    if (!listed[btype])
+      error->one(FLERR,
+                 "Pair style cell/virtual: triangle {}-{}-{} has its central node {} of type {}, "
+                 "which has no cell/virtual coefficients; give them for the wall type and the "
+                 "fluid type (pair_coeff WALL FLUID cell/virtual f0 r0 [gamma])",
+                 tag[a], tag[b], tag[c], tag[b], btype);
     int *jlist = firstneigh[b];
     const int jnum = numneigh[b];
 
@@ -159,6 +167,7 @@ void PairCellVirtual::settings(int narg, char **arg)
 
 void PairCellVirtual::init_style()
 {
+  CellMech::require_unit_consistency(lmp, "Pair style cell/virtual");
   if (!atom->molecular || !atom->avec->angles_allow)
     error->all(FLERR,
                "Pair style cell/virtual requires an atom style with angles (the wall "
@@ -173,6 +182,12 @@ void PairCellVirtual::init_style()
     error->all(FLERR, "Pair style cell/virtual requires newton_pair on (forces on ghost nodes)");
   require_ghost_velocities();
   neighbor->add_request(this, NeighConst::REQ_FULL);
+
+  const int ntypes = atom->ntypes;
+  listed.assign(ntypes + 1, 0);
+  for (int i = 1; i <= ntypes; i++)
+    for (int j = 1; j <= ntypes; j++)
+      if (setflag[MIN(i, j)][MAX(i, j)]) listed[i] = 1;
 }
 
 double PairCellVirtual::init_one(int i, int j)

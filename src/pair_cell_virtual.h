@@ -16,6 +16,8 @@ PairStyle(cell/virtual,PairCellVirtual);
 
 #include "pair_cell_lj84.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairCellVirtual : public PairCellLJ84 {
@@ -30,6 +32,9 @@ class PairCellVirtual : public PairCellLJ84 {
 
  protected:
   double reach;    // bound on |barycentre - central node| of a triangle
+  // types with a cell/virtual coefficient: under pair_style hybrid the neighbour list skips the
+  // others, so a central node of such a type has no list to walk
+  std::vector<char> listed;
 };
 
 }    // namespace LAMMPS_NS

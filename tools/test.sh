@@ -12,5 +12,5 @@ if [ "${OTHER_LAMMPS:-1}" = 1 ]; then
   echo "== the other supported LAMMPS release: $other (unit tests, plugin guard, short runs of every example)"
   LAMMPS_VERSION=$other CELLMECH_BUILD_DIR=build-$other bash "$here/tools/setup.sh"
   (cd "$here/build-$other" && ctest --output-on-failure -j "${JOBS:-$(nproc)}" \
-    -R '^(physics|styles|plugin_guard|examples|cell_mpi_restart)$')
+    -R '^(physics|styles|plugin_guard|examples|cell_mpi_restart|probe)$')
 fi
