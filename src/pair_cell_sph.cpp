@@ -354,11 +354,63 @@ void PairCellSPH::init_style()
     error->all(FLERR,
                "Pair style cell/sph requires 'comm_modify vel yes' (viscosity and continuity use "
                "ghost velocities)");
+  check_fluid_atoms();
   // without fix cell/fluid the continuity equation is never integrated: a frozen density is
   // legal (a fixed boundary of SPH particles) but rarely meant for a whole system
   if (modify->get_fix_by_style("^cell/fluid").empty() && comm->me == 0)
     error->warning(FLERR, "Pair style cell/sph without fix cell/fluid: densities stay constant");
   neighbor->add_request(this);
+}
+
+/* ----------------------------------------------------------------------
+   a fluid particle without mass or density turns every SPH sum it enters into NaN with no
+   error; a wall node of a fluid type (pair_coeff * * cell/sph) would be pushed by the fluid's
+   pressure as if it were fluid. Both stop the run, naming the first such atom.
+------------------------------------------------------------------------- */
+
+void PairCellSPH::check_fluid_atoms()
+{
+  const double *rho = atom->dvector[irho];
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  tagint first_local[3] = {MAXTAGINT, MAXTAGINT, MAXTAGINT}, first[3];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!fluid[type[i]]) continue;
+    if (!(rmass[i] > 0.0) || !std::isfinite(rmass[i])) first_local[0] = MIN(first_local[0], tag[i]);
+    if (!(rho[i] > 0.0) || !std::isfinite(rho[i])) first_local[1] = MIN(first_local[1], tag[i]);
+    if (atom->molecular == Atom::MOLECULAR && atom->nspecial && atom->nspecial[i][0] > 0)
+      first_local[2] = MIN(first_local[2], tag[i]);
+  }
+  MPI_Allreduce(first_local, first, 3, MPI_LMP_TAGINT, MPI_MIN, world);
+  auto value = [&](tagint id, int what) {
+    const int i = atom->map(id);
+    double v = (i >= 0 && i < atom->nlocal) ? (what == 0 ? rmass[i] : rho[i]) : -HUGE_VAL;
+    double all;
+    MPI_Allreduce(&v, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+    return all;
+  };
+  // the wall node of a fluid type first: its zero density is a consequence
+  if (first[2] != MAXTAGINT) {
+    const int i = atom->map(first[2]);
+    int t = (i >= 0 && i < atom->nlocal) ? type[i] : 0, tall;
+    MPI_Allreduce(&t, &tall, 1, MPI_INT, MPI_MAX, world);
+    error->all(FLERR,
+               "Pair style cell/sph: atom {} is bonded (a wall node) but its type {} is a fluid "
+               "type (pair_coeff {} {} cell/sph); give cell/sph coefficients to the fluid types "
+               "only",
+               first[2], tall, tall, tall);
+  }
+  if (first[0] != MAXTAGINT)
+    error->all(FLERR,
+               "Pair style cell/sph: fluid particle {} has mass {} (rmass must be > 0: set it in "
+               "the data file's cell section or with 'set ... mass')",
+               first[0], value(first[0], 0));
+  if (first[1] != MAXTAGINT)
+    error->all(FLERR,
+               "Pair style cell/sph: fluid particle {} has density d_rho {} (must be > 0: the "
+               "rest density rho0 for a new particle)",
+               first[1], value(first[1], 1));
 }
 
 double PairCellSPH::init_one(int i, int j)

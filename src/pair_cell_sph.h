@@ -48,6 +48,7 @@ class PairCellSPH : public Pair {
   double *drho_array() const;    // per-atom continuity rate d_drho
 
  protected:
+  void check_fluid_atoms();
   int *fluid;                    // per type: 1 if a fluid type (pair_coeff I I set)
   double *rho0, *c, *P0, *mu;    // per type
   double **s;                    // per type pair: smoothing length (cutoff 2s)

@@ -7,6 +7,8 @@ what was expected (never a signal, never exit 0).
   particles walked a list that was never built (segfault, exit 139).
 - 5.4 fix cell/fluid on a group without fluid did nothing, silently; two cell/fluid fixes on the
   same fluid advanced its density and mass twice per step.
+- 5.2 a fluid particle with zero density or mass (`set atom N d_rho 0.0`, `create_atoms 2 single`)
+  or a wall type made fluid (`pair_coeff * * cell/sph`) ran to the end with every value NaN, exit 0.
 - 5.5 `units real` / `units metal` ran with forces off by the unit conversion factors the styles
   ignore (they are right only where those factors are 1: micro, nano, si, cgs, lj).
 """
@@ -58,6 +60,18 @@ CASES = [
      "fix again all cell/fluid Pi -364.0 Lp 1.0e-9\n" + RUN,
      r"Fix cell/fluid again and fix cell/fluid osmosis both act on \d+ atoms|"
      r"Fix cell/fluid osmosis and fix cell/fluid again both act on \d+ atoms"),
+    ("5.2 a fluid particle with density 0",
+     CELL.format(units="micro") + MODEL + "fix osmosis fluid cell/fluid Pi -364.0 Lp 1.0e-9\n"
+     "set atom ${fluidatom} d_rho 0.0\n" + RUN,
+     r"Pair style cell/sph: fluid particle \d+ has density d_rho 0"),
+    ("5.2 a fluid particle created without mass",
+     CELL.format(units="micro") + MODEL + "fix osmosis fluid cell/fluid Pi -364.0 Lp 1.0e-9\n"
+     "create_atoms 2 single 0.5 0.5 0.5\n" + RUN,
+     r"Pair style cell/sph: fluid particle \d+ has mass 0"),
+    ("5.2 the wall type made fluid (pair_coeff * * cell/sph)",
+     CELL.format(units="micro") + MODEL + "fix osmosis fluid cell/fluid Pi -364.0 Lp 1.0e-9\n"
+     "pair_coeff * * cell/sph 1.0 264.6 0.0 1.0 6.4\n" + RUN,
+     r"Pair style cell/sph: atom \d+ is bonded \(a wall node\) but its type 1 is a fluid type"),
     ("5.5 units real", CELL.format(units="real") + MODEL + RUN,
      r"does not support units real: the cell model applies no unit conversion"),
     ("5.5 units metal", CELL.format(units="metal") + MODEL + RUN,
@@ -68,6 +82,9 @@ CASES = [
 def main():
     d = T.workdir("probe")
     T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", 3.2, cwd=d)
+    # the first fluid particle (type 2) of the data file: "ID molecule type x y z ..."
+    lines = open(f"{d}/cell.data").read().split("Atoms")[1].split("\n\n")[1].splitlines()
+    COARSE["fluidatom"] = next(int(w[0]) for w in map(str.split, lines) if w[2] == "2")
     # the same input with the right coefficient runs: the cases fail for their one defect only
     ok = CELL.format(units="micro") + TYPO.replace("2 2 cell/virtual", "1 2 cell/virtual")
     rc, log = T.lmp(ok, cwd=d, variables=COARSE, check=False, log="log.ok")
