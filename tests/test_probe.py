@@ -9,10 +9,14 @@ what was expected (never a signal, never exit 0).
   same fluid advanced its density and mass twice per step.
 - 5.2 a fluid particle with zero density or mass (`set atom N d_rho 0.0`, `create_atoms 2 single`)
   or a wall type made fluid (`pair_coeff * * cell/sph`) ran to the end with every value NaN, exit 0.
+- 5.9 `LEVEL=7`, `NP=0`, `NP=abc`, `NFLUID=-1 bash tools/main-job.sh`: LEVEL was checked only after
+  the setup, the others not at all (NP=0 ran the job on one rank, NFLUID=-1 reached the generator).
 - 5.5 `units real` / `units metal` ran with forces off by the unit conversion factors the styles
   ignore (they are right only where those factors are 1: micro, nano, si, cgs, lj).
 """
+import os
 import re
+import subprocess
 
 import lmptest as T
 
@@ -101,7 +105,27 @@ def main():
             T.check(f"{name}, {nprocs} rank(s): a clear error", not crashed and rc != 0 and
                     re.search(pattern, log) is not None,
                     f"rc {rc}: {err.group(0)[:170] if err else 'no error'}")
+    main_job_inputs(d)
     T.finish()
+
+
+def main_job_inputs(d):
+    """Bad settings of the main job stop it at once, before the setup starts."""
+    for setting, pattern in (("LEVEL=7", "LEVEL must be 3, 4 or 5"),
+                             ("NP=0", "NP .* must be a whole number >= 1"),
+                             ("NP=abc", "NP .* must be a whole number >= 1"),
+                             ("NFLUID=-1", "NFLUID .* must be a whole number >= 1")):
+        k, v = setting.split("=")
+        env = dict(os.environ, OUT=os.path.join(d, "main-job-bad"), **{k: v})
+        try:
+            p = subprocess.run(["bash", os.path.join(T.ROOT, "tools", "main-job.sh")], env=env,
+                               capture_output=True, text=True, timeout=30)
+            rc, out = p.returncode, p.stdout + p.stderr
+        except subprocess.TimeoutExpired:
+            rc, out = None, "still running after 30 s"
+        T.check(f"5.9 main-job with {setting}: refused before the setup", rc == 2 and
+                "[setup]" not in out and re.search(pattern, out) is not None,
+                f"rc {rc}: {out.strip().splitlines()[-1][:120] if out.strip() else ''}")
 
 
 if __name__ == "__main__":

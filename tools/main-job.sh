@@ -7,11 +7,17 @@
 #   LEVEL=5: 10242 + 14000 (the paper's fine resolution); NFLUID overrides the fluid count
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-bash "$here/tools/setup.sh"
-source "$here/build/cellmech-env.sh"
 out=${OUT:-$here/results/main}
 LEVEL=${LEVEL:-3}
 NP=${NP:-1}
+# every input is checked before any work (the setup alone can take minutes)
+bad() { echo "main-job: $*" >&2; exit 2; }
+case "$LEVEL" in 3|4|5) ;; *) bad "LEVEL must be 3, 4 or 5 (642, 2562 or 10242 wall nodes), got '$LEVEL'" ;; esac
+[[ "$NP" =~ ^[1-9][0-9]*$ ]] || bad "NP (MPI ranks) must be a whole number >= 1, got '$NP'"
+[ -z "${NFLUID:-}" ] || [[ "$NFLUID" =~ ^[1-9][0-9]*$ ]] ||
+  bad "NFLUID (fluid particles in the cell) must be a whole number >= 1, got '$NFLUID'"
+bash "$here/tools/setup.sh"
+source "$here/build/cellmech-env.sh"
 mkdir -p "$out"
 cd "$out"
 # Model lengths per level, as tools/validation/common.py: a level coarser doubles the wall
