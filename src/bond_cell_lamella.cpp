@@ -21,6 +21,7 @@
 #include "bond_cell_lamella.h"
 
 #include "cell_compat.h"
+#include "cell_fields.h"
 
 #include "atom.h"
 #include "cell_physics.h"
@@ -38,9 +39,6 @@
 
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
-
-static constexpr char REF_NAME[] = "cellref";
-static constexpr char AREA_NAME[] = "alam";
 
 /* ---------------------------------------------------------------------- */
 
@@ -63,21 +61,6 @@ BondCellLamella::~BondCellLamella()
 }
 
 /* ---------------------------------------------------------------------- */
-
-double BondCellLamella::rest_length(int i, int j) const
-{
-  double **ref = atom->darray[iref];
-  const double dx = ref[i][0] - ref[j][0];
-  const double dy = ref[i][1] - ref[j][1];
-  const double dz = ref[i][2] - ref[j][2];
-  return sqrt(dx * dx + dy * dy + dz * dz);
-}
-
-double BondCellLamella::area(int i, int j) const
-{
-  const double *alam = atom->dvector[ialam];
-  return 0.5 * (alam[i] + alam[j]);
-}
 
 // delta_c follows sigma_c and Gc, also when fix adapt changes them during a run
 void BondCellLamella::update_dc()
@@ -121,7 +104,7 @@ void BondCellLamella::compute(int eflag, int vflag)
                  "Bond style cell/lamella: bond {}-{} has no area (d_alam {} and {}); is d_alam "
                  "set for every node with lamella bonds and communicated to ghosts (ghost yes)?",
                  tag[i1], tag[i2], alam[i1], alam[i2]);
-    const double r0 = rest_length(i1, i2);
+    const double r0 = CellMech::rest_length(atom->darray[iref], i1, i2);
     if (!(r0 > 0.0))
       error->one(FLERR,
                  "Bond style cell/lamella: bond {}-{} has zero rest length; are the d2_cellref "
@@ -134,7 +117,7 @@ void BondCellLamella::compute(int eflag, int vflag)
     const double rsq = delx * delx + dely * dely + delz * delz;
     const double r = sqrt(rsq);
     const double delta = r - r0;
-    const double A = area(i1, i2);
+    const double A = CellMech::lamella_area(alam, i1, i2);
 
     // Debonding is irreversible: the bond leaves the bond arrays of the atom(s) storing it now;
     // special lists and the record follow in process_debonds()
@@ -340,20 +323,20 @@ void BondCellLamella::init_style()
                "molecular");
 
   int flag, cols, ghost;
-  iref = atom->find_custom_ghost(REF_NAME, flag, cols, ghost);
+  iref = atom->find_custom_ghost(CellMech::REF_FIELD, flag, cols, ghost);
   if (iref < 0 || flag != 1 || cols != 3 || !ghost)
     error->all(FLERR,
                "Bond style cell/lamella requires the wall reference positions as a per-atom array "
                "communicated to ghosts: 'fix cell all property/atom rmass d_rho d_drho d2_{} 3 "
                "d_{} ghost yes' before read_data",
-               REF_NAME, AREA_NAME);
-  ialam = atom->find_custom_ghost(AREA_NAME, flag, cols, ghost);
+               CellMech::REF_FIELD, CellMech::AREA_FIELD);
+  ialam = atom->find_custom_ghost(CellMech::AREA_FIELD, flag, cols, ghost);
   if (ialam < 0 || flag != 1 || cols != 0 || !ghost)
     error->all(FLERR,
                "Bond style cell/lamella requires the area share of each node's lamella bonds as a "
                "per-atom vector communicated to ghosts: 'fix cell all property/atom rmass d_rho "
                "d_drho d2_{} 3 d_{} ghost yes' before read_data",
-               REF_NAME, AREA_NAME);
+               CellMech::REF_FIELD, CellMech::AREA_FIELD);
 
   bool damped = false;
   for (int i = 1; i <= atom->nbondtypes; i++)
@@ -377,7 +360,7 @@ void BondCellLamella::init_style()
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
       const int j = atom->map(atom->bond_atom[i][m]);
-      if (type > 0 && setflag[type] && j >= 0) lmax_local = MAX(lmax_local, rest_length(i, j));
+      if (type > 0 && setflag[type] && j >= 0) lmax_local = MAX(lmax_local, CellMech::rest_length(atom->darray[iref], i, j));
     }
   MPI_Allreduce(&lmax_local, &lmax, 1, MPI_DOUBLE, MPI_MAX, world);
 
@@ -456,8 +439,8 @@ void BondCellLamella::write_data(FILE *fp)
 double BondCellLamella::single(int type, double rsq, int i, int j, double &fforce)
 {
   const double r = sqrt(rsq);
-  const double delta = r - rest_length(i, j);
-  const double A = area(i, j);
+  const double delta = r - CellMech::rest_length(atom->darray[iref], i, j);
+  const double A = CellMech::lamella_area(atom->dvector[ialam], i, j);
   const double delta_c = cohesive_length(sigma[type], Gc[type]);
   fforce = -A * cohesive_traction(sigma[type], delta_c, delta) / r;
   if (gamma[type] > 0.0) {

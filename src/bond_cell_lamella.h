@@ -47,8 +47,6 @@ class BondCellLamella : public Bond {
   std::string logfile;           // debond event log (bond_style cell/lamella log FILE)
   std::vector<FixCellLamellaBreak::Event> debonded;    // debonded on this rank, this step
 
-  double rest_length(int i, int j) const;
-  double area(int i, int j) const;
   void update_dc();
   void process_debonds();
   FixCellLamellaBreak *break_fix();

@@ -12,6 +12,7 @@
 #include "bond_cell_tether.h"
 
 #include "cell_compat.h"
+#include "cell_fields.h"
 
 #include "atom.h"
 #include "cell_physics.h"
@@ -29,8 +30,6 @@
 
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
-
-static constexpr char REF_NAME[] = "cellref";
 
 /* ---------------------------------------------------------------------- */
 
@@ -50,17 +49,6 @@ BondCellTether::~BondCellTether()
     memory->destroy(gamma);
     memory->destroy(lamf);
   }
-}
-
-/* ---------------------------------------------------------------------- */
-
-double BondCellTether::rest_length(int i, int j) const
-{
-  double **ref = atom->darray[iref];
-  const double dx = ref[i][0] - ref[j][0];
-  const double dy = ref[i][1] - ref[j][1];
-  const double dz = ref[i][2] - ref[j][2];
-  return sqrt(dx * dx + dy * dy + dz * dz);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -90,7 +78,7 @@ void BondCellTether::compute(int eflag, int vflag)
     const double delz = x[i1][2] - x[i2][2];
     const double rsq = delx * delx + dely * dely + delz * delz;
     const double r = sqrt(rsq);
-    const double l0 = rest_length(i1, i2);
+    const double l0 = CellMech::rest_length(atom->darray[iref], i1, i2);
     if (!(l0 > 0.0))
       error->one(FLERR,
                  "Bond style cell/tether: tether {}-{} has zero rest length; are the d2_cellref "
@@ -274,14 +262,14 @@ void BondCellTether::init_style()
   CellMech::require_unit_consistency(lmp, "Bond style cell/tether");
   checked = 0;
   int flag, cols;
-  iref = atom->find_custom(REF_NAME, flag, cols);
+  iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
   if (iref < 0 || flag != 1 || cols != 3)
     error->all(FLERR,
                "Bond style cell/tether requires the wall reference positions as a per-atom array: "
                "'fix cell all property/atom rmass d_rho d_drho d2_{} 3 ghost yes' before "
                "read_data, filled from the "
                "data file (read_data ... fix ID NULL cell)",
-               REF_NAME);
+               CellMech::REF_FIELD);
 
   bool damped = false;
   for (int i = 1; i <= atom->nbondtypes; i++)
@@ -297,7 +285,7 @@ void BondCellTether::init_style()
     for (int i = 0; i < atom->nlocal; i++)
       for (int m = 0; m < atom->num_bond[i]; m++) {
         const int j = atom->map(atom->bond_atom[i][m]);
-        if (j >= 0) lmax_local = MAX(lmax_local, rest_length(i, j));
+        if (j >= 0) lmax_local = MAX(lmax_local, CellMech::rest_length(atom->darray[iref], i, j));
       }
   }
   MPI_Allreduce(&lmax_local, &lmax, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -369,7 +357,7 @@ void BondCellTether::write_data(FILE *fp)
 double BondCellTether::single(int type, double rsq, int i, int j, double &fforce)
 {
   const double r = sqrt(rsq);
-  const double l0 = rest_length(i, j);
+  const double l0 = CellMech::rest_length(atom->darray[iref], i, j);
   const double lam = r / l0;
   fforce = -tether_tension(G[type], t0[type], l0, lam) / r;
   if (gamma[type] > 0.0) {

@@ -36,7 +36,6 @@ class BondCellTether : public Bond {
 
   // rest length of the tether between atoms i and j (local or ghost): distance of their
   // reference positions
-  double rest_length(int i, int j) const;
 
  protected:
   double *G, *t0, *gamma, *lamf;

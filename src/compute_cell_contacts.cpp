@@ -27,6 +27,7 @@
 #include "compute_cell_contacts.h"
 
 #include "atom.h"
+#include "cell_fields.h"
 #include "bond.h"
 #include "cell_physics.h"
 #include "comm.h"
@@ -99,7 +100,7 @@ void ComputeCellContacts::init()
                "Compute cell/contacts requires an angle style (angle_style zero nocoeff) so that "
                "LAMMPS lists the wall triangles");
   int flag, cols;
-  ialam = atom->find_custom("alam", flag, cols);
+  ialam = atom->find_custom(CellMech::AREA_FIELD, flag, cols);
   if (ialam >= 0 && (flag != 1 || cols != 0)) ialam = -1;
   // built only when invoked; the pair cutoffs cover the wall-wall contact distance
   neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
@@ -133,10 +134,7 @@ void ComputeCellContacts::compute_array()
   int *type = atom->type;
   tagint *molecule = atom->molecule;
 
-  tagint maxmol_local = 0, maxmol = 0;
-  for (int i = 0; i < nlocal; i++) maxmol_local = MAX(maxmol_local, molecule[i]);
-  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-  const int ncells = (int) maxmol;
+  const int ncells = ComputeCellProps::count_cells(lmp);
   std::vector<double> c;
   ComputeCellProps::wall_centres(lmp, ncells, sph, c);
 
@@ -179,7 +177,7 @@ void ComputeCellContacts::compute_array()
     if (btype <= 0 || molecule[i1] == molecule[i2]) continue;
     Sums &s = row(molecule[i1], molecule[i2]);
     s[0] += 1.0;
-    if (alam) s[1] += 0.5 * (alam[i1] + alam[i2]);
+    if (alam) s[1] += CellMech::lamella_area(alam, i1, i2);
     const double del[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
     double fbond = 0.0;
     force->bond->single(btype, del[0] * del[0] + del[1] * del[1] + del[2] * del[2], i1, i2, fbond);

@@ -23,6 +23,7 @@
 #include "compute_cell_props.h"
 
 #include "cell_compat.h"
+#include "cell_fields.h"
 
 #include "atom.h"
 #include "bond.h"
@@ -50,7 +51,7 @@ using namespace CellPhysics;
 static constexpr double BIG = 1.0e300;
 
 ComputeCellProps::ComputeCellProps(LAMMPS *_lmp, int narg, char **arg) :
-    Compute(_lmp, narg, arg), leaks(1), ncells(0), sph(nullptr), tether(nullptr), ialam(-1)
+    Compute(_lmp, narg, arg), leaks(1), ncells(0), sph(nullptr), tether(nullptr), ialam(-1), iref(-1)
 {
   normal[0] = normal[1] = 0.0;
   normal[2] = 1.0;
@@ -102,7 +103,9 @@ void ComputeCellProps::init()
                "Compute cell/props requires an angle style (angle_style zero nocoeff) so "
                "that LAMMPS lists the wall triangles");
   int flag, cols;
-  ialam = atom->find_custom("alam", flag, cols);
+  // bond style cell/tether (required above) has checked that the reference positions exist
+  iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
+  ialam = atom->find_custom(CellMech::AREA_FIELD, flag, cols);
   if (ialam >= 0 && (flag != 1 || cols != 0)) ialam = -1;
 }
 
@@ -118,6 +121,14 @@ void ComputeCellProps::allocate(int n)
 /* ----------------------------------------------------------------------
    centre of each cell: mean of its unwrapped wall nodes (atoms in bonds)
 ------------------------------------------------------------------------- */
+
+int ComputeCellProps::count_cells(LAMMPS *lmp)
+{
+  tagint maxmol_local = 0, maxmol = 0;
+  for (int i = 0; i < lmp->atom->nlocal; i++) maxmol_local = MAX(maxmol_local, lmp->atom->molecule[i]);
+  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, lmp->world);
+  return (int) maxmol;
+}
 
 void ComputeCellProps::wall_centres(LAMMPS *lmp, int ncells, const PairCellSPH *sph,
                                     std::vector<double> &c)
@@ -159,10 +170,7 @@ void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
 
-  tagint maxmol_local = 0, maxmol = 0;
-  for (int i = 0; i < atom->nlocal; i++) maxmol_local = MAX(maxmol_local, atom->molecule[i]);
-  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-  allocate((int) maxmol);
+  allocate(count_cells(lmp));
 
   std::vector<double> c;
   wall_centres(lmp, ncells, sph, c);
@@ -173,6 +181,7 @@ void ComputeCellProps::compute_array()
   std::vector<double> local(NS * (ncells + 1), 0.0), all(NS * (ncells + 1));
   std::vector<double> lmax_local(ncells + 1, 0.0), lmax_all(ncells + 1);
   double **x = atom->x;
+  double **ref = atom->darray[iref];
   tagint *molecule = atom->molecule;
 
   auto rel = [&](int i, tagint m, double *out) {
@@ -229,7 +238,7 @@ void ComputeCellProps::compute_array()
     if (molecule[i2] != m) {
       // a middle-lamella bond glues this cell to another: both cells count it and its area
       const double *alam = ialam >= 0 ? atom->dvector[ialam] : nullptr;
-      const double area = alam ? 0.5 * (alam[i1] + alam[i2]) : 0.0;
+      const double area = alam ? CellMech::lamella_area(alam, i1, i2) : 0.0;
       for (const tagint mm : {m, molecule[i2]})
         if (mm >= 1 && mm <= ncells) {
           local[NS * mm + 9] += 1.0;
@@ -239,7 +248,7 @@ void ComputeCellProps::compute_array()
     }
     double del[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
     const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-    const double lam = sqrt(rsq) / tether->rest_length(i1, i2);
+    const double lam = sqrt(rsq) / CellMech::rest_length(ref, i1, i2);
     local[NS * m + 5] += lam;
     local[NS * m + 6] += 1.0;
     lmax_local[m] = MAX(lmax_local[m], lam);

@@ -51,6 +51,8 @@ class ComputeCellProps : public Compute {
 
   // centre of each cell 1..ncells (mean of its unwrapped wall nodes) into c[3m..3m+2], the same
   // on every rank; shared with compute cell/contacts
+  // cells are molecules 1..N: N is the largest molecule ID on any rank
+  static int count_cells(class LAMMPS *);
   static void wall_centres(class LAMMPS *, int ncells, const class PairCellSPH *,
                            std::vector<double> &c);
 
@@ -61,6 +63,7 @@ class ComputeCellProps : public Compute {
   class PairCellSPH *sph;
   class BondCellTether *tether;
   int ialam;    // per-atom lamella area d_alam (tissue), -1 without one
+  int iref;     // per-atom reference positions d2_cellref (rest lengths)
 
   void allocate(int);
   void count_leaks(const std::vector<double> &);

@@ -28,6 +28,7 @@
 #include "atom.h"
 #include "cell_physics.h"
 #include "comm.h"
+#include "compute_cell_props.h"
 #include "error.h"
 #include "force.h"
 #include "group.h"
@@ -180,9 +181,7 @@ void FixCellFluid::check_group()
 
 void FixCellFluid::grow_cells()
 {
-  tagint maxmol_local = 0, maxmol = 0;
-  for (int i = 0; i < atom->nlocal; i++) maxmol_local = MAX(maxmol_local, atom->molecule[i]);
-  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  const int maxmol = ComputeCellProps::count_cells(lmp);
   if (maxmol <= ncells) return;
   const int old = ncells;
   ncells = (int) maxmol;

@@ -23,6 +23,7 @@
 #include "fix_cell_vtk.h"
 
 #include "atom.h"
+#include "cell_fields.h"
 #include "cell_physics.h"
 #include "comm.h"
 #include "domain.h"
@@ -62,7 +63,7 @@ int FixCellVTK::setmask()
 void FixCellVTK::init()
 {
   int flag, cols;
-  iref = atom->find_custom("cellref", flag, cols);
+  iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
   if (iref < 0 || flag != 1 || cols != 3)
     error->all(FLERR,
                "Fix cell/vtk requires the reference positions d2_cellref (3 columns) of "

@@ -6,6 +6,7 @@ loses a tether) and cells coming apart (a lamella bond lets go).
   plot_tissue.py DIR [PREFIX]      reads DIR/PREFIX.dat (default tissue-compress), writes
                                    DIR/tissue-stress-strain.csv and .png
 """
+import os
 import sys
 
 import matplotlib
@@ -14,24 +15,14 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# columns of in.tissue-compress's fix ave/time file (after the step)
-COLS = ["time_us", "strain", "stress_kPa", "F_top_nN", "F_bottom_nN", "P_mean_kPa", "P_min_kPa",
-        "P_max_kPa", "fluid_mass_pg", "broken_tethers", "debonded_bonds", "debonded_area_um2",
-        "glued_area_um2"]
+# the columns of in.tissue-compress's file and the smoothing are the tissue report's
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "tissue"))
+from tissuedata import COMPRESS as COLS, smooth  # noqa: E402
 
 
 def load(path):
     a = np.loadtxt(path, comments="#", ndmin=2)
     return {name: a[:, k + 1] for k, name in enumerate(COLS)}
-
-
-def smooth(y, n):
-    """Centred moving average over n samples (the plate force rings at the wall's frequencies)."""
-    if n < 2 or len(y) < n:
-        return y.copy()
-    k = np.ones(n) / n
-    pad = np.pad(y, (n // 2, n - 1 - n // 2), mode="edge")
-    return np.convolve(pad, k, mode="valid")
 
 
 def events(strain, count):

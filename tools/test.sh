@@ -7,8 +7,9 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$here/tools/setup.sh"
 (cd "$here/build" && ctest --output-on-failure -j "${JOBS:-$(nproc)}" "$@")
 if [ "${OTHER_LAMMPS:-1}" = 1 ]; then
-  default=$(sed -n 's/^LAMMPS_VERSION=${LAMMPS_VERSION:-\([0-9]*\)}$/\1/p' "$here/tools/setup.sh")
-  [ "${LAMMPS_VERSION:-$default}" = 20250204 ] && other=20260704 || other=20250204
+  # the release build/ was made with (setup.sh writes it into the environment file)
+  used=$(source "$here/build/cellmech-env.sh" && echo "$CELLMECH_LAMMPS_VERSION")
+  [ "$used" = 20250204 ] && other=20260704 || other=20250204
   echo "== the other supported LAMMPS release: $other (unit tests, plugin guard, short runs of every example)"
   LAMMPS_VERSION=$other CELLMECH_BUILD_DIR=build-$other bash "$here/tools/setup.sh"
   (cd "$here/build-$other" && ctest --output-on-failure -j "${JOBS:-$(nproc)}" \
