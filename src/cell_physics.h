@@ -2,7 +2,7 @@
    cellmech: LAMMPS plugin for the micromechanics of biological cells.
    Pure physics of the SPH-DEM plant cell model (Van Liedekerke et al.,
    Phys. Rev. E 81, 061906 (2010)), free of LAMMPS so tests can call it.
-   Equation numbers refer to that paper; see ../shared/MODEL.md.
+   Equation numbers refer to that paper; docs/model.md describes the model.
 ------------------------------------------------------------------------- */
 
 #ifndef CELLMECH_CELL_PHYSICS_H
@@ -107,7 +107,7 @@ inline double sheet_force_A2(double G, double L0, double t0, double lam)
 
 // Cubic-spline kernel of smoothing length s, support 2s. Eq. 3 (unit integral) fixes the
 // prefactor at 3 / (2 pi s^3) for this bracket; the 2 / (3 pi s^3) printed in Eq. 4 does not
-// integrate to one (MODEL.md, section 1).
+// integrate to one (docs/model.md, section 5).
 inline double kernel_w(double r, double s)
 {
   const double q = r / s;

@@ -13,8 +13,8 @@ Asserted:
    within 5% at lam = 1.01: the tether law's second-order term (lam - lam^-5 = 6e - 15e^2)
    softens it by 2.5% there, edges of a 20 x 20 sheet add the rest;
  * the constraint stiffens: fixed sides carry more force than free ones at every stretch;
- * the paper's comparison, as far as it holds (MODEL.md: "good agreement to lam = 1.2 for A1,
-   below 20% error for A2"): free sides against A1 within 5% at lam = 1.01 and fixed sides
+ * the paper's comparison, as far as it holds (Appendix 1: good agreement with A1 up to
+   lam = 1.2, below 20% error against A2; docs/model.md section 4): free sides against A1 within 5% at lam = 1.01 and fixed sides
    against A2 within 20% from lam = 1.15 on. The full table shows where the network departs.
 """
 import math

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """cellgen: build LAMMPS data files for the cellmech plant-cell model.
 
-Geometry of one cell (Van Liedekerke et al. 2010, MODEL.md section 1):
+Geometry of one cell (Van Liedekerke et al. 2010, docs/model.md section 2.2):
   * wall: icosahedral geodesic sphere of subdivision level n (10*4^n+2 nodes: 12, 42, 162, 642,
     2562, 10242), radius R, nodes projected on the sphere; tethers = mesh edges (LAMMPS bonds);
     triangles = LAMMPS angles (a, b, c) ordered so that (b-a)x(c-a) points OUT of the cell. Angles
@@ -156,7 +156,7 @@ def write_data(path, title, box, atoms, bonds, angles, masses, refs, rho, bond_t
 
 
 UNITS = {
-    # length, mass per unit (kg), defaults: radius, rho0, wall mass (paper, MODEL.md sec. 2)
+    # length, mass per unit (kg), defaults: radius, rho0, wall mass (docs/model.md section 3.1)
     "micro": dict(radius=30.0, rho0=1.0, wall_mass=1.3e4, pad=10.0),
     "si": dict(radius=30e-6, rho0=1000.0, wall_mass=1.3e-11, pad=10e-6),
 }

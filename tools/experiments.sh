@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The paper's experiments (MODEL.md section 4, paper Secs. III A-D, Figs. 4-11) in one command:
+# The paper's experiments (docs/model.md section 4, paper Secs. III A-D, Figs. 4-11) in one command:
 # quasistatic compression at two rates, turgor series, relaxation (stiff and soft, viscosities,
 # zeta = 1.1 wall), impact at 5 m/s (stiff and soft, 1-1000 mPa s), failure (lamf = 1.04,
 # quasistatic and impact). Writes the data of each run to $OUT, then the report experiments.md

@@ -2,7 +2,7 @@
 """membrane: an inflated thin Neo-Hookean membrane squeezed between two rigid plates.
 
 Independent reference for the quasistatic compression of the cell (Feng and Yang 1973 style,
-MODEL.md section 4). Axisymmetric membrane, no bending stiffness; the contents are a fixed volume
+docs/model.md section 4). Axisymmetric membrane, no bending stiffness; the contents are a fixed volume
 (optionally a liquid of bulk modulus K); the plates are flat, rigid and frictionless. A membrane
 carries no compression, so where the classical solution would compress the centre of the contact
 disc the solver uses tension-field theory: a slack (wrinkled) disc inside a taut ring.

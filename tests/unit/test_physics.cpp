@@ -51,7 +51,8 @@ TEST(Tether, SmallStrainStiffnessIsEq20)
               k * 1e-3);
   EXPECT_NEAR(k_fd / k, 1.0, 1e-8);
   EXPECT_DOUBLE_EQ(tether_stiffness(G, T0), k);
-  // MODEL.md section 3: the stiff wall's tether stiffness is 349 N/m (1e-3 N/m per micro unit)
+  // docs/model.md section 3.2: the stiff wall's tether stiffness is 349 N/m (1e-3 N/m per micro
+  // unit)
   EXPECT_NEAR(k * 1e-3, 349.0, 0.5);
 }
 
@@ -88,7 +89,8 @@ TEST(Repulsion84, ForceAndEnergy)
 
 TEST(Breathing, PaperFrequenciesFromTableI)
 {
-  // MODEL.md: a wall mass near 1.3e-11 kg reproduces the paper's 3.451e7 and 5.943e5 rad/s
+  // docs/model.md section 5: a wall mass near 1.3e-11 kg reproduces the paper's 3.451e7 and
+  // 5.943e5 rad/s
   const double R = 30e-6, M = 1.276e-11;
   const double ws = breathing_omega_vacuo(2.4e9, R, M, 126e-9);
   const double wsoft = breathing_omega_vacuo(20e6, R, 1.423e-11, 5e-9);
@@ -132,7 +134,7 @@ TEST(Kernel, IntegratesToOneIn3D)
 
 TEST(Kernel, PaperPrefactorWouldIntegrateToFourNinths)
 {
-  // MODEL.md, section 1: the bracket of Eq. 4 with the printed prefactor 2/(3 pi s^3) integrates
+  // docs/model.md sec. 5: the bracket of Eq. 4 with the printed prefactor 2/(3 pi s^3) integrates
   // to (2/3)/(3/2) = 4/9, not one; the unit integral of Eq. 3 requires 3/(2 pi s^3). The paper's
   // kernel is the implemented one rescaled by the ratio of the two prefactors.
   const double s = 3.2;

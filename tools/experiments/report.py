@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Report of the paper's experiments (tools/experiments.sh): plots, snapshot pictures, a table that
-sets each result of MODEL.md section 4 beside ours, and the wall time of every run.
+sets each result of docs/model.md section 4 beside ours, and the wall time of every run.
 
   report.py --run RUNDIR --res coarse|paper --report REPORTDIR [--fallback COARSE_RUNDIR]
 
@@ -522,7 +522,7 @@ def main():
         L.append("Runs that had not finished at this resolution when the report was written are taken from "
                  "the coarse run and marked *(coarse)*: " + ", ".join(sorted(R.used_fallback)) + ".\n")
     L.append("## Paper against ours\n")
-    L.append("| experiment | paper (MODEL.md sec. 4) | ours | difference | why / note |")
+    L.append("| experiment | paper (docs/model.md sec. 4) | ours | difference | why / note |")
     L.append("|---|---|---|---|---|")
     for r in rows:
         L.append("| " + " | ".join(str(x) for x in r) + " |")

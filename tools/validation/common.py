@@ -38,7 +38,7 @@ LEVELS = {
 T_INFLATE = {3: 20.0, 4: 20.0, 5: 10.0}
 RES_LEVEL = {"coarse": 3, "paper": 4, "study": 4, "fine": 5}
 
-# the stiff cell of Table I (MODEL.md section 2), units micro
+# the stiff cell of Table I (docs/model.md section 3.1), units micro
 R0, M_WALL, RHO0, C_PHYS = 30.0, 1.3e4, 1.0, 264.6
 STIFF = dict(G=8.0e5, t0=0.126, P=364.0)
 SOFT = dict(G=20.0e3 / 3.0, t0=0.005, P=0.1)
