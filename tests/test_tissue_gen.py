@@ -259,7 +259,7 @@ def main():
     with open(f"{d}/close.txt", "w") as f:
         f.write("0 0 0\n4 0 0\n")
     for args, want in ((["--lattice", "sc", "--n", 2, 2], "--n needs three positive integers"),
-                       (["--lattice", "sc", "--gap", 0], "--gap must be > 0"),
+                       (["--lattice", "sc", "--gap", 0], "--gap: expected a finite number > 0"),
                        (["--centres", "bad.txt"], "bad.txt line 3"),
                        (["--centres", "close.txt"], "closer than twice the gap"),
                        (["--lattice", "sc", "--bond-cutoff", 2], "--bond-cutoff must exceed --gap")):

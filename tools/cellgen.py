@@ -6,6 +6,7 @@ Geometry of one cell (Van Liedekerke et al. 2010, docs/model.md section 2.2):
     2562, 10242), radius R, nodes projected on the sphere; tethers = mesh edges (LAMMPS bonds);
     triangles = LAMMPS angles (a, b, c) ordered so that (b-a)x(c-a) points OUT of the cell. Angles
     travel with atoms through MPI migration and restart files, which is what later styles need.
+    The middle atom b owns its triangle (the orientation/ownership contract of src/cell_fields.h).
   * fluid: a cubic lattice clipped to the inside of the wall (as in the paper), by count or spacing.
   * per-atom cell data in a `cell` section (mass, density, density rate, rest position), read into
     `fix cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes` with
@@ -32,9 +33,79 @@ Usage:
 """
 import argparse
 import math
+import os
 import sys
 
 import numpy as np
+
+# The most particles one data file may hold. cellgen keeps every particle in Python lists while it
+# writes the file (0.44 kB of memory each, measured at 3e5), so this bound keeps a run within about
+# 1 GB and half a minute: a count beyond it (a typo such as --nfluid 100000000, or a tiny --spacing) is refused
+# before any work instead of filling the memory until the kernel kills the process. It is 80 times
+# the paper's finest cell (10242 wall nodes + 14000 fluid particles).
+MAX_PARTICLES = 2_000_000
+
+
+def fail(what, msg):
+    """Stop with one line and exit status 2, as argparse does for a bad argument."""
+    print(f"cellgen.py {what}: error: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse that reports a bad argument in one line (without the usage block)."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def number(above=None, minimum=None, below=None):
+    """argparse type: a finite float with bounds (nan and inf pass float() but no geometry)."""
+    cond = "".join(f" {op} {v:g}" for op, v in ((">", above), (">=", minimum), ("<", below))
+                   if v is not None)
+
+    def parse(text):
+        try:
+            v = float(text)
+        except ValueError:
+            v = math.nan
+        if not (math.isfinite(v) and (above is None or v > above) and (minimum is None or v >= minimum)
+                and (below is None or v < below)):
+            raise argparse.ArgumentTypeError(f"expected a finite number{cond}, got '{text}'")
+        return v
+    return parse
+
+
+def whole(minimum=None, maximum=None):
+    """argparse type: an integer within [minimum, maximum]."""
+    cond = " and ".join(f"{op} {v}" for op, v in ((">=", minimum), ("<=", maximum)) if v is not None)
+
+    def parse(text):
+        try:
+            v = int(text)
+        except ValueError:
+            v = None
+        if v is None or (minimum is not None and v < minimum) or (maximum is not None and v > maximum):
+            raise argparse.ArgumentTypeError(f"expected a whole number {cond}, got '{text}'")
+        return v
+    return parse
+
+
+def output_file(text):
+    """argparse type: a file that can be written (checked before the work, not after it)."""
+    folder = os.path.dirname(text) or "."
+    if not os.path.isdir(folder):
+        raise argparse.ArgumentTypeError(f"expected a file in an existing folder, got '{text}' "
+                                         f"(no folder '{folder}')")
+    if os.path.isdir(text) or not os.access(folder, os.W_OK):
+        raise argparse.ArgumentTypeError(f"expected a file that can be written, got '{text}'")
+    return text
+
+
+def check_count(what, n, option):
+    if n > MAX_PARTICLES:
+        fail(what, f"{option} would make {n:.4g} particles, more than cellgen's limit of "
+                   f"{MAX_PARTICLES:.0e} (MAX_PARTICLES, about 1 GB of memory)")
 
 # ---------------------------------------------------------------------------------- geometry
 
@@ -86,12 +157,23 @@ def mesh_area_volume(nodes, tri):
 
 
 def fluid_lattice(radius, spacing, inset):
-    """Cubic lattice points strictly inside radius - inset, centred on the origin."""
-    n = int(math.ceil(radius / spacing)) + 1
-    g = (np.arange(-n, n + 1)) * spacing
-    X, Y, Z = np.meshgrid(g, g, g, indexing="ij")
-    pts = np.column_stack([X.ravel(), Y.ravel(), Z.ravel()])
-    return pts[np.linalg.norm(pts, axis=1) < radius - inset]
+    """Cubic lattice points strictly inside radius - inset, centred on the origin, in (x, y, z)
+    lexicographic order. Only the squared distances of the grid are held (8 bytes a grid point,
+    about twice the points kept), not its coordinates."""
+    rin = radius - inset
+    if not rin > 0:
+        return np.zeros((0, 3))
+    n = int(rin / spacing) + 1
+    g = np.arange(-n, n + 1) * spacing
+    g2 = g * g
+    inside = np.sqrt(g2[:, None, None] + g2[None, :, None] + g2[None, None, :]) < rin
+    return g[np.column_stack(np.nonzero(inside))]
+
+
+def lattice_count_bound(r, spacing):
+    """At most this many points of a cubic lattice lie inside a ball of radius r: each owns a
+    cube of side spacing that lies within radius r + spacing sqrt(3)/2."""
+    return 4.0 / 3.0 * math.pi * (r / spacing + 0.5 * math.sqrt(3.0)) ** 3
 
 
 def spacing_for_count(points_at, nfluid, lo, hi, iterations=100):
@@ -110,8 +192,13 @@ def fluid_by_count(radius, nfluid, inset):
     """Largest-spacing cubic lattice clipped to the sphere that holds at least nfluid points."""
     if nfluid <= 0:
         return np.zeros((0, 3)), 0.0
-    lo = spacing_for_count(lambda s: fluid_lattice(radius, s, inset), nfluid, 1e-3 * radius,
-                           2.0 * radius)
+    # Lower end of the search: the cubes of side s around the lattice points inside radius rin cover
+    # the ball of radius rin - s sqrt(3)/2, so a spacing s with (4/3)pi(rin/s - sqrt(3)/2)^3 >= n
+    # surely holds n points. Starting lower only costs memory (a fixed 1e-3 radius asked for 8e9
+    # grid points when the inset left little room).
+    rin = radius - inset
+    lo = rin / ((3.0 * nfluid / (4.0 * math.pi)) ** (1.0 / 3.0) + 0.5 * math.sqrt(3.0))
+    lo = spacing_for_count(lambda s: fluid_lattice(radius, s, inset), nfluid, lo, 2.0 * radius)
     return fluid_lattice(radius, lo, inset), lo
 
 
@@ -166,10 +253,24 @@ def build_cells(args):
     d = UNITS[args.units]
     R = args.radius if args.radius is not None else d["radius"]
     rho0 = args.rho0 if args.rho0 is not None else d["rho0"]
-    if R <= 0 or rho0 <= 0:
-        sys.exit("cellgen: --radius and --rho0 must be > 0")
-    if args.level < 0 or args.level > 6:
-        sys.exit("cellgen: --level must be between 0 and 6")
+    centres = []
+    for c in args.centres.split(";"):
+        try:
+            centres.append(tuple(number()(v) for v in c.split(",")))
+        except argparse.ArgumentTypeError:
+            centres.append(())
+        if len(centres[-1]) != 3:
+            fail("cell", f"--centres: expected finite 'x,y,z;x,y,z;...', got '{args.centres}'")
+    cc = np.array(centres)
+    dist = np.linalg.norm(cc[:, None] - cc[None], axis=2) + np.diag(np.full(len(cc), np.inf))
+    if dist.min() <= 2.0 * R:
+        i, j = np.unravel_index(np.argmin(dist), dist.shape)
+        fail("cell", f"--centres: cells {i + 1} and {j + 1} are {dist.min():.6g} apart, their walls "
+                     f"(radius {R:g}) overlap or touch: expected centres more than {2 * R:g} apart")
+    nw = 10 * 4 ** args.level + 2
+    if args.spacing is None:
+        check_count("cell", len(centres) * (nw + args.nfluid),
+                    f"{len(centres)} cell(s) of {nw} wall nodes and --nfluid {args.nfluid}")
     unit, tri, edges = icosphere(args.level)
     nodes = unit * R
     area, volume = mesh_area_volume(nodes, tri)
@@ -177,20 +278,20 @@ def build_cells(args):
         wall_mass = args.wall_areal_density * 4.0 * math.pi * R * R
     else:
         wall_mass = args.wall_mass if args.wall_mass is not None else d["wall_mass"]
-    if wall_mass <= 0:
-        sys.exit("cellgen: the wall mass must be > 0")
     mean_edge = np.linalg.norm(nodes[edges[:, 0]] - nodes[edges[:, 1]], axis=1).mean()
     # keep fluid half a wall spacing inside the wall so no particle starts in contact
     inset = args.inset if args.inset is not None else 0.5 * mean_edge
+    if inset >= R and (args.spacing is not None or args.nfluid > 0):
+        fail("cell", f"--inset: expected a distance smaller than the radius {R:g} (the fluid stays "
+                     f"that far inside the wall), got {inset:g}")
     if args.spacing is not None:
+        check_count("cell", int(len(centres) * (nw + lattice_count_bound(R - inset, args.spacing))),
+                    f"--spacing {args.spacing:g} in {len(centres)} cell(s) of radius {R:g}")
         fluid = fluid_lattice(R, args.spacing, inset)
         spacing = args.spacing
     else:
         fluid, spacing = fluid_by_count(R, args.nfluid, inset)
-    centres = [tuple(float(v) for v in c.split(",")) for c in args.centres.split(";")]
-    if any(len(c) != 3 for c in centres):
-        sys.exit("cellgen: --centres wants 'x,y,z;x,y,z;...'")
-    nf, nw = len(fluid), len(nodes)
+    nf = len(fluid)
     # each fluid particle carries its lattice cell at density rho0: SPH takes m/rho as the particle's
     # volume, so m = rho0 spacing^3 keeps sum(m/rho) equal to the volume the fluid fills. (Spreading
     # rho0 V_wall over the particles instead makes every particle claim more room than it has: the
@@ -210,6 +311,11 @@ def build_cells(args):
     pts = np.array(refs)
     if args.box:
         box = args.box
+        lo, hi = np.array(box[0::2]), np.array(box[1::2])
+        if np.any(pts.min(axis=0) <= lo) or np.any(pts.max(axis=0) >= hi):
+            fail("cell", f"--box: expected xlo xhi ylo yhi zlo zhi around every particle "
+                         f"({' '.join(f'{a:.6g} {b:.6g}' for a, b in zip(pts.min(0), pts.max(0)))}), "
+                         f"got {' '.join(f'{v:g}' for v in box)}")
     else:
         pad = args.pad if args.pad is not None else d["pad"]
         lo, hi = pts.min(axis=0) - pad, pts.max(axis=0) + pad
@@ -227,6 +333,7 @@ def build_cells(args):
 def build_sheet(args):
     """Flat triangular sheet (paper Appendix 1): ny rows of nx nodes, rows offset by half a bond."""
     a = args.bond
+    check_count("sheet", args.nx * args.ny, f"--nx {args.nx} --ny {args.ny}")
     h = a * math.sqrt(3.0) / 2.0
     pts, index = [], {}
     for j in range(args.ny):
@@ -283,7 +390,7 @@ LATTICES = {  # basis (in lattice constants) and repeat vector of each seed latt
 
 
 def tfail(msg):
-    sys.exit(f"cellgen tissue: {msg}")
+    fail("tissue", msg)
 
 
 def lattice_seeds(kind, n, a):
@@ -452,8 +559,12 @@ def fluid_in_wall(nodes, tri, centre, spacing, inset):
     a, b, c = nodes[tri[:, 0]], nodes[tri[:, 1]], nodes[tri[:, 2]]
     nrm = np.cross(b - a, c - a)
     nrm /= np.linalg.norm(nrm, axis=1)[:, None]
-    depth = np.einsum("ij,ij->i", nrm, a)[None, :] - pts @ nrm.T
-    return pts[depth.min(axis=1) >= inset] if len(pts) else pts
+    plane = np.einsum("ij,ij->i", nrm, a)
+    # in chunks: the point-by-triangle table would otherwise take 8 bytes x points x triangles
+    chunk = max(1, 4_000_000 // len(tri))
+    keep = np.concatenate([(plane[None, :] - pts[k:k + chunk] @ nrm.T).min(axis=1) >= inset
+                           for k in range(0, len(pts), chunk)] or [np.zeros(0, bool)])
+    return pts[keep]
 
 
 def lamella_bonds(x, mol, cutoff):
@@ -479,53 +590,39 @@ def lamella_bonds(x, mol, cutoff):
 def build_tissue(args):
     from scipy import sparse
     rng = np.random.default_rng(args.seed)
-    if not 0 <= args.level <= 6:
-        tfail(f"--level must be between 0 and 6, got {args.level}")
-    R = args.radius
-    if R is not None and R <= 0:
-        tfail(f"--radius must be > 0, got {R:g}")
-    R = 30.0 if R is None else R
-    if args.gap <= 0:
-        tfail(f"--gap must be > 0, got {args.gap:g}")
-    if args.dome <= 0:
-        tfail(f"--dome must be > 0 (dome radius over the cell's equivalent radius), got {args.dome:g}")
-    if args.sharpness < 2:
-        tfail(f"--sharpness must be >= 2, got {args.sharpness:g}")
-    if args.smooth < 0:
-        tfail(f"--smooth must be >= 0, got {args.smooth}")
+    R = 30.0 if args.radius is None else args.radius
+    nv = 10 * 4 ** args.level + 2
     ell = np.array(args.elongate if args.elongate else (1.0, 1.0, 1.0), float)
-    if np.any(ell <= 0):
-        tfail(f"--elongate needs three positive factors, got {' '.join(map(str, args.elongate))}")
     ell = ell / np.prod(ell) ** (1.0 / 3.0)  # same cell volume, elongated in the ratio given
     radii, vcell = None, 4.0 / 3.0 * math.pi * R ** 3
     # ---- seeds and the tissue block
     if args.lattice:
-        if len(args.n) != 3 or min(args.n) < 1:
+        if len(args.n) != 3:
             tfail(f"--n needs three positive integers NX NY NZ, got {' '.join(map(str, args.n))}")
         basis, rep = LATTICES[args.lattice]
+        check_count("tissue", int(np.prod(args.n)) * len(basis) * (nv + args.nfluid),
+                    f"--lattice {args.lattice} --n {' '.join(map(str, args.n))} of {nv} wall nodes "
+                    f"and {args.nfluid} fluid particles a cell")
         per_seed = float(np.prod(rep)) / len(basis)  # lattice volume per seed, in a^3
-        if args.spacing is not None and args.spacing <= 0:
-            tfail(f"--spacing must be > 0, got {args.spacing:g}")
         a = args.spacing if args.spacing is not None else (vcell / per_seed) ** (1.0 / 3.0)
         seeds, lo, hi = lattice_seeds(args.lattice, args.n, a)
         how = f"lattice {args.lattice} {'x'.join(map(str, args.n))}, constant {a:.6g}"
     elif args.spacing is not None:
         tfail("--spacing (the lattice constant) needs --lattice")
     elif args.random is not None:
-        if args.random < 1:
-            tfail(f"--random needs a positive number of cells, got {args.random}")
+        check_count("tissue", args.random * (nv + args.nfluid),
+                    f"--random {args.random} of {nv} wall nodes and {args.nfluid} fluid particles a cell")
         size = np.array(args.size if args.size else [(args.random * vcell) ** (1.0 / 3.0)] * 3, float)
-        if np.any(size <= 0):
-            tfail("--size needs three positive lengths LX LY LZ")
         vcell = np.prod(size) / args.random
         dmin = args.min_dist if args.min_dist is not None else 0.7 * vcell ** (1.0 / 3.0)
-        if dmin <= 0:
-            tfail(f"--min-dist must be > 0, got {dmin:g}")
         lo, hi = -0.5 * size, 0.5 * size
         seeds = random_seeds(args.random, lo, hi, dmin, rng)
         how = f"random {args.random} seeds (seed {args.seed}, min distance {dmin:.4g})"
     else:
         seeds, radii = read_centres(args.centres)
+        check_count("tissue", len(seeds) * (nv + args.nfluid),
+                    f"--centres {args.centres} ({len(seeds)} cells) of {nv} wall nodes and "
+                    f"{args.nfluid} fluid particles a cell")
         if radii is None and len(seeds) > 1:
             from scipy.spatial import cKDTree
             pad = 0.5 * np.median(cKDTree(seeds).query(seeds, k=2)[0][:, 1])
@@ -541,8 +638,6 @@ def build_tissue(args):
     seeds, lo, hi = seeds * ell, lo * ell, hi * ell
     radii = np.zeros(len(seeds)) if radii is None else radii
     ncell = len(seeds)
-    if args.lloyd < 0:
-        tfail(f"--lloyd must be >= 0, got {args.lloyd}")
     for _ in range(args.lloyd):
         seeds = np.array([c["centroid"] for c in power_cells(seeds, radii, lo, hi)])
     if ncell > 1:
@@ -628,20 +723,24 @@ def build_tissue(args):
     wall_area = area_t.sum(1)
     # ---- fluid: one spacing for all cells
     inset = args.inset if args.inset is not None else R0_COARSE
-    if inset < 0:
-        tfail(f"--inset must be >= 0, got {inset:g}")
+    rmax = np.linalg.norm(x - centres[:, None, :], axis=2).max(axis=1)
     if args.fluid_spacing is not None:
-        if args.fluid_spacing <= 0:
-            tfail(f"--fluid-spacing must be > 0, got {args.fluid_spacing:g}")
         spacing = args.fluid_spacing
+        check_count("tissue", ncell * nv + int(sum(lattice_count_bound(r, spacing) for r in rmax)),
+                    f"--fluid-spacing {spacing:g} in {ncell} cells")
     elif args.nfluid > 0:
         m = int(np.argmin(np.abs(vol - vol.mean())))
+        # no fluid fits where the inset reaches past the nearest triangle plane around the centre
+        a, b, c = (x[m][tri[:, k]] - centres[m] for k in range(3))
+        nrm = np.cross(b - a, c - a)
+        rin = (np.einsum("ij,ij->i", nrm, a) / np.linalg.norm(nrm, axis=1)).min() - inset
+        if not rin > 0:
+            tfail(f"--inset: expected a distance smaller than the cell's inner radius "
+                  f"{rin + inset:.4g} (the fluid stays that far inside the wall), got {inset:g}")
         spacing = spacing_for_count(lambda s: fluid_in_wall(x[m], tri, centres[m], s, inset),
                                     args.nfluid, 1e-3 * size, 2.0 * size, iterations=50)
-    elif args.nfluid == 0:
-        spacing = 0.0
     else:
-        tfail(f"--nfluid must be >= 0, got {args.nfluid}")
+        spacing = 0.0
     fluid = [fluid_in_wall(x[i], tri, centres[i], spacing, inset) if spacing > 0 else np.zeros((0, 3))
              for i in range(ncell)]
     # ---- middle lamella
@@ -680,8 +779,6 @@ def build_tissue(args):
     reach = math.ceil(1.25 * reach_need * 10 - 1e-9) / 10.0
     # ---- atoms, masses, data file
     areal = args.wall_areal_density if args.wall_areal_density is not None else WALL_AREAL
-    if areal <= 0 or args.rho0 <= 0:
-        tfail("--wall-areal-density and --rho0 must be > 0")
     m_fluid = args.rho0 * spacing ** 3 if spacing > 0 else 1.0
     atoms, rmass, rho, alam_atom, bonds, btype, angles = [], [], [], [], [], [], []
     wall_index = np.zeros(len(xw), int)
@@ -752,70 +849,72 @@ def build_tissue(args):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p = Parser(prog="cellgen.py", description=__doc__.split("\n")[0])
     sub = p.add_subparsers(dest="what", required=True)
     c = sub.add_parser("cell", help="one or more cells: geodesic wall + clipped fluid lattice")
-    c.add_argument("-o", "--output", required=True)
-    c.add_argument("--level", type=int, default=4, help="subdivision level (4: 2562 nodes)")
-    c.add_argument("--radius", type=float, help="cell radius (default 30 um)")
+    c.add_argument("-o", "--output", required=True, type=output_file)
+    c.add_argument("--level", type=whole(0, 6), default=4, help="subdivision level (4: 2562 nodes)")
+    c.add_argument("--radius", type=number(above=0), help="cell radius (default 30 um)")
     g = c.add_mutually_exclusive_group()
-    g.add_argument("--nfluid", type=int, default=3500, help="fluid particles per cell (>=)")
-    g.add_argument("--spacing", type=float, help="fluid lattice spacing")
-    c.add_argument("--inset", type=float, help="keep fluid this far inside the wall")
+    g.add_argument("--nfluid", type=whole(0), default=3500, help="fluid particles per cell (>=)")
+    g.add_argument("--spacing", type=number(above=0), help="fluid lattice spacing")
+    c.add_argument("--inset", type=number(minimum=0), help="keep fluid this far inside the wall")
     c.add_argument("--centres", default="0,0,0", help="cell centres 'x,y,z;x,y,z'")
-    c.add_argument("--rho0", type=float, help="fluid density (default 1 pg/um^3 = 1000 kg/m^3)")
+    c.add_argument("--rho0", type=number(above=0), help="fluid density (default 1 pg/um^3 = 1000 kg/m^3)")
     w = c.add_mutually_exclusive_group()
-    w.add_argument("--wall-mass", type=float, help="total wall mass of a cell (default 1.3e4 pg)")
-    w.add_argument("--wall-areal-density", type=float, help="rho_s t0 (mass per wall area)")
-    c.add_argument("--pad", type=float, help="box padding around the cells (10 um)")
-    c.add_argument("--box", type=float, nargs=6)
+    w.add_argument("--wall-mass", type=number(above=0), help="total wall mass of a cell (default 1.3e4 pg)")
+    w.add_argument("--wall-areal-density", type=number(above=0), help="rho_s t0 (mass per wall area)")
+    c.add_argument("--pad", type=number(minimum=0), help="box padding around the cells (10 um)")
+    c.add_argument("--box", type=number(), nargs=6)
     c.add_argument("--units", choices=sorted(UNITS), default="micro")
     s = sub.add_parser("sheet", help="flat triangular tether sheet (Appendix 1)")
-    s.add_argument("-o", "--output", required=True)
-    s.add_argument("--nx", type=int, default=20)
-    s.add_argument("--ny", type=int, default=20)
-    s.add_argument("--bond", type=float, default=2.5)
-    s.add_argument("--thickness", type=float, default=0.126)
+    s.add_argument("-o", "--output", required=True, type=output_file)
+    s.add_argument("--nx", type=whole(2), default=20)
+    s.add_argument("--ny", type=whole(2), default=20)
+    s.add_argument("--bond", type=number(above=0), default=2.5)
+    s.add_argument("--thickness", type=number(above=0), default=0.126)
     s.add_argument("--orient", choices=("x", "y"), default="x", help="direction of the bond rows")
-    s.add_argument("--rho-s", type=float, default=8.956, help="wall density (pg/um^3)")
+    s.add_argument("--rho-s", type=number(above=0), default=8.956, help="wall density (pg/um^3)")
     t = sub.add_parser("tissue", help="a block of glued polyhedral cells (Voronoi/Laguerre walls)")
-    t.add_argument("-o", "--output", required=True)
+    t.add_argument("-o", "--output", required=True, type=output_file)
     g = t.add_mutually_exclusive_group(required=True)
     g.add_argument("--lattice", choices=sorted(LATTICES), help="seeds on a lattice")
-    g.add_argument("--random", type=int, metavar="N", help="N random seeds in a box")
+    g.add_argument("--random", type=whole(1), metavar="N", help="N random seeds in a box")
     g.add_argument("--centres", metavar="FILE", help="seeds from a file: x y z [r] per line")
-    t.add_argument("--n", type=int, nargs="+", default=[2, 2, 2], metavar="N",
+    t.add_argument("--n", type=whole(1), nargs="+", default=[2, 2, 2], metavar="N",
                    help="lattice repeats NX NY NZ (default 2 2 2)")
     r = t.add_mutually_exclusive_group()
-    r.add_argument("--radius", type=float, help="equivalent-sphere cell radius (default 30 um)")
-    r.add_argument("--spacing", type=float, help="lattice constant instead of --radius")
-    t.add_argument("--size", type=float, nargs=3, metavar="L", help="--random: box LX LY LZ")
-    t.add_argument("--min-dist", type=float, help="--random: minimum seed distance")
-    t.add_argument("--lloyd", type=int, default=0, metavar="K", help="Lloyd iterations (default 0)")
-    t.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
-    t.add_argument("--tissue-box", type=float, nargs=6, metavar="X",
+    r.add_argument("--radius", type=number(above=0), help="equivalent-sphere cell radius (default 30 um)")
+    r.add_argument("--spacing", type=number(above=0), help="lattice constant instead of --radius")
+    t.add_argument("--size", type=number(above=0), nargs=3, metavar="L", help="--random: box LX LY LZ")
+    t.add_argument("--min-dist", type=number(above=0), help="--random: minimum seed distance")
+    t.add_argument("--lloyd", type=whole(0), default=0, metavar="K", help="Lloyd iterations (default 0)")
+    t.add_argument("--seed", type=whole(0), default=1, help="random seed (default 1)")
+    t.add_argument("--tissue-box", type=number(), nargs=6, metavar="X",
                    help="block that clips the cells: xlo xhi ylo yhi zlo zhi")
-    t.add_argument("--elongate", type=float, nargs=3, metavar="F", help="stretch factors ax ay az")
-    t.add_argument("--level", type=int, default=3, help="icosphere level of each wall (default 3)")
-    t.add_argument("--gap", type=float, default=2.56, help="wall-wall gap (default 2.56 um)")
-    t.add_argument("--sharpness", type=float, default=16.0, help="edge rounding exponent p (16)")
+    t.add_argument("--elongate", type=number(above=0), nargs=3, metavar="F", help="stretch factors ax ay az")
+    t.add_argument("--level", type=whole(0, 6), default=3, help="icosphere level of each wall (default 3)")
+    t.add_argument("--gap", type=number(above=0), default=2.56, help="wall-wall gap (default 2.56 um)")
+    t.add_argument("--sharpness", type=number(minimum=2), default=16.0, help="edge rounding exponent p (16)")
     t.add_argument("--surface", choices=("round", "cut"), default="round",
                    help="free surface of the block: domed cells (round) or flat faces (cut)")
-    t.add_argument("--dome", type=float, default=1.0,
+    t.add_argument("--dome", type=number(above=0), default=1.0,
                    help="round surface: dome radius / the cell's equivalent radius (1.0)")
-    t.add_argument("--smooth", type=int, default=100, help="tangential smoothing iterations (100)")
-    t.add_argument("--min-angle", type=float, default=20.0, help="smallest triangle angle allowed (20)")
-    t.add_argument("--air", "--porosity", type=float, help="target porosity (intercellular air)")
+    t.add_argument("--smooth", type=whole(0), default=100, help="tangential smoothing iterations (100)")
+    t.add_argument("--min-angle", type=number(minimum=0), default=20.0,
+                   help="smallest triangle angle allowed (20)")
+    t.add_argument("--air", "--porosity", type=number(), help="target porosity (intercellular air)")
     f = t.add_mutually_exclusive_group()
-    f.add_argument("--nfluid", type=int, default=440, help="fluid count of a mean cell (440)")
-    f.add_argument("--fluid-spacing", type=float, help="fluid lattice spacing")
-    t.add_argument("--inset", type=float, help="fluid distance from the wall (default 3.2 um)")
-    t.add_argument("--bond-cutoff", type=float, help="lamella bond cutoff (default 1.5 gap)")
+    f.add_argument("--nfluid", type=whole(0), default=440, help="fluid count of a mean cell (440)")
+    f.add_argument("--fluid-spacing", type=number(above=0), help="fluid lattice spacing")
+    t.add_argument("--inset", type=number(minimum=0), help="fluid distance from the wall (default 3.2 um)")
+    t.add_argument("--bond-cutoff", type=number(above=0), help="lamella bond cutoff (default 1.5 gap)")
     t.add_argument("--no-glue", action="store_true", help="no middle-lamella bonds")
-    t.add_argument("--rho0", type=float, default=1.0, help="fluid density (1 pg/um^3)")
-    t.add_argument("--wall-areal-density", type=float, help="wall mass per area (1.3e4/(4 pi 30^2))")
-    t.add_argument("--pad", type=float, default=10.0, help="box padding around the atoms (10 um)")
-    t.add_argument("--stats", help="statistics JSON (default: output name with .json)")
+    t.add_argument("--rho0", type=number(above=0), default=1.0, help="fluid density (1 pg/um^3)")
+    t.add_argument("--wall-areal-density", type=number(above=0),
+                   help="wall mass per area (1.3e4/(4 pi 30^2))")
+    t.add_argument("--pad", type=number(minimum=0), default=10.0, help="box padding around the atoms (10 um)")
+    t.add_argument("--stats", type=output_file, help="statistics JSON (default: output name with .json)")
     args = p.parse_args(argv)
     {"cell": build_cells, "sheet": build_sheet, "tissue": build_tissue}[args.what](args)
 
