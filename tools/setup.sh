@@ -33,7 +33,7 @@ log() { printf '[setup] %s\n' "$*"; }
 
 # ---- 1. packages -------------------------------------------------------------------------------
 pkgs=(build-essential cmake pkg-config git openmpi-bin libopenmpi-dev libeigen3-dev libfftw3-dev
-  libgtest-dev libpng-dev zlib1g-dev python3-numpy python3-scipy python3-matplotlib python3-vtk9 dpkg-dev
+  libgtest-dev libgmock-dev libyaml-dev libpng-dev zlib1g-dev python3-numpy python3-scipy python3-matplotlib python3-vtk9 dpkg-dev
   python3-pytest)
 if [ "${SKIP_APT:-0}" != 1 ]; then
   missing=()

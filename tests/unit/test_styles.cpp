@@ -10,6 +10,7 @@
 #include "lammps.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "pair.h"
 #include "variable.h"
 
 #include <gtest/gtest.h>
@@ -273,6 +274,39 @@ TEST_F(Lmp, Repulsion84InLammps)
   std::printf("8-4 repulsion at r %.2f: LAMMPS %.10g  Eq.12 %.10g\n", r, -f(1, 1), expect);
   EXPECT_NEAR(-f(1, 1), expect, 1e-10 * expect);
   EXPECT_NEAR(f(2, 1), expect, 1e-10 * expect);
+}
+
+// LAMMPS's force-style harness cannot compare cell/sph's single() with its compute()
+// (tests/force-styles/README.md): two fluid particles at rest (no viscous force) with different
+// densities, at several distances within the kernel's support.
+TEST_F(Lmp, SphSingleMatchesCompute)
+{
+  cmds({"units micro", "atom_style atomic", "atom_modify map array", "comm_modify vel yes",
+        "region box block -10 10 -10 10 -10 10", "create_box 1 box",
+        "fix cell all property/atom rmass d_rho d_drho ghost yes", "create_atoms 1 single 0 0 0",
+        "create_atoms 1 single 1.1 0.4 -0.3", "set atom 1 mass 2.0 d_rho 1.02",
+        "set atom 2 mass 3.0 d_rho 0.97", "pair_style cell/sph",
+        "pair_coeff 1 1 1.0 264.6 300.0 1.0 3.2"});
+  for (double scale : {1.0, 2.5, 4.0}) {
+    cmd("set atom 2 x " + std::to_string(1.1 * scale) + " y " + std::to_string(0.4 * scale) +
+        " z " + std::to_string(-0.3 * scale));
+    cmd("run 0");
+    const int i = lmp->atom->map(1), j = lmp->atom->map(2);
+    double **x = lmp->atom->x;
+    const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+    double fsingle = 0.0;
+    lmp->force->pair->single(i, j, 1, 1, rsq, 1.0, 1.0, fsingle);
+    std::printf("cell/sph at r %.3f: compute f1 = (%.10g %.10g %.10g), single -fpair*del = "
+                "(%.10g %.10g %.10g)\n",
+                std::sqrt(rsq), f(1, 0), f(1, 1), f(1, 2), -fsingle * del[0], -fsingle * del[1],
+                -fsingle * del[2]);
+    ASSERT_NE(fsingle, 0.0);
+    for (int d = 0; d < 3; d++) {
+      EXPECT_NEAR(f(1, d), -fsingle * del[d], 1e-12 * std::fabs(fsingle * std::sqrt(rsq)));
+      EXPECT_NEAR(f(2, d), fsingle * del[d], 1e-12 * std::fabs(fsingle * std::sqrt(rsq)));
+    }
+  }
 }
 
 // ---------------------------------------------------------------- bad input
