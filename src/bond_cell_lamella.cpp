@@ -136,7 +136,7 @@ void BondCellLamella::compute(int eflag, int vflag)
       const double dvx = v[i1][0] - v[i2][0];
       const double dvy = v[i1][1] - v[i2][1];
       const double dvz = v[i1][2] - v[i2][2];
-      fbond -= A * gamma[type] * (delx * dvx + dely * dvy + delz * dvz) / rsq;
+      fbond += damping_fpair(A * gamma[type], delx * dvx + dely * dvy + delz * dvz, rsq);
     }
     if (eflag) ebond = A * cohesive_energy(sigma[type], dc[type], delta);
 
@@ -448,7 +448,7 @@ double BondCellLamella::single(int type, double rsq, int i, int j, double &fforc
     double **v = atom->v;
     double dot = 0.0;
     for (int d = 0; d < 3; d++) dot += (x[i][d] - x[j][d]) * (v[i][d] - v[j][d]);
-    fforce -= A * gamma[type] * dot / rsq;
+    fforce += damping_fpair(A * gamma[type], dot, rsq);
   }
   return A * cohesive_energy(sigma[type], delta_c, delta);
 }

@@ -108,7 +108,7 @@ void BondCellTether::compute(int eflag, int vflag)
       const double dvx = v[i1][0] - v[i2][0];
       const double dvy = v[i1][1] - v[i2][1];
       const double dvz = v[i1][2] - v[i2][2];
-      fbond -= gamma[type] * (delx * dvx + dely * dvy + delz * dvz) / rsq;
+      fbond += damping_fpair(gamma[type], delx * dvx + dely * dvy + delz * dvz, rsq);
     }
     if (eflag) ebond = tether_energy(G[type], t0[type], l0, lam);
 
@@ -365,7 +365,7 @@ double BondCellTether::single(int type, double rsq, int i, int j, double &fforce
     double **v = atom->v;
     double dot = 0.0;
     for (int d = 0; d < 3; d++) dot += (x[i][d] - x[j][d]) * (v[i][d] - v[j][d]);
-    fforce -= gamma[type] * dot / rsq;
+    fforce += damping_fpair(gamma[type], dot, rsq);
   }
   return tether_energy(G[type], t0[type], l0, lam);
 }

@@ -1,10 +1,33 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   cellmech: the per-atom fields of fix property/atom that several styles
-   read (names without the d_ / d2_ prefix), and what is derived from them.
+   cellmech: what the styles share about the atoms of a cell: the per-atom
+   fields of fix property/atom that several styles read (names without the
+   d_ / d2_ prefix) and what is derived from them, the wall triangles'
+   contract with the data files, and which atoms are wall nodes.
+
+   Wall triangles. A triangle of a cell wall is a LAMMPS angle (a, b, c) of
+   angle type 1, written by cellgen.py (tools/; every generator of walls):
+     - orientation: (x_b - x_a) x (x_c - x_a) points OUT of the cell (right-hand
+       order seen from outside), so that summed cone volumes are the cell
+       volume (compute cell/props), solid angles are 4 pi inside (leaks) and
+       VTK normals point out (fix cell/vtk);
+     - ownership: b, the angle's middle atom, is the central node. With
+       newton_bond on (required) LAMMPS stores the angle with atom b, so the
+       rank that owns b owns the triangle; the triangle belongs to the cell
+       molecule[b] (wall area per cell in fix cell/fluid and compute
+       cell/props), and pair cell/virtual finds the fluid near the triangle's
+       virtual particle in b's neighbour list, within reach of x_b;
+     - a triangle whose angle type is <= 0 has been taken out of the wall by
+       a broken tether (bond style cell/tether) and counts nowhere.
 ------------------------------------------------------------------------- */
 
 #ifndef CELLMECH_CELL_FIELDS_H
 #define CELLMECH_CELL_FIELDS_H
+
+#include "atom.h"
+#include "fix_cell_lamella_break.h"
+#include "fix_cell_tether_break.h"
+#include "lammps.h"
+#include "modify.h"
 
 #include <cmath>
 
@@ -12,6 +35,37 @@ namespace CellMech {
 
 constexpr char REF_FIELD[] = "cellref";    // d2_cellref: rest (reference) position of a wall node
 constexpr char AREA_FIELD[] = "alam";      // d_alam: a node's area share of its lamella bonds
+constexpr char RHO_FIELD[] = "rho";        // d_rho: density of a fluid particle (pair cell/sph)
+constexpr char DRHO_FIELD[] = "drho";      // d_drho: its continuity rate (Eq. 7)
+
+/* ----------------------------------------------------------------------
+   Wall nodes, the one definition for compute cell/props (cell centres) and
+   fix cell/vtk (points): the atoms with 1-2 neighbours now (tethers or
+   lamella bonds), or that have had them, so that a node whose bonds have all
+   broken is still part of its wall and the broken and debonded counts
+   (fix cell_broken, cell_debonded) of every node are seen. Fluid never has
+   bonds: pair cell/sph refuses a bonded atom of a fluid type. Valid for
+   local atoms (the per-atom counts of the fixes are).
+------------------------------------------------------------------------- */
+
+class WallNodes {
+ public:
+  explicit WallNodes(LAMMPS_NS::LAMMPS *lmp) : nspecial(lmp->atom->nspecial)
+  {
+    auto *broken = lmp->modify->get_fix_by_id(LAMMPS_NS::FixCellTetherBreak::ID);
+    auto *debonded = lmp->modify->get_fix_by_id(LAMMPS_NS::FixCellLamellaBreak::ID);
+    nbroken = broken ? broken->vector_atom : nullptr;
+    ndebonded = debonded ? debonded->vector_atom : nullptr;
+  }
+  bool operator()(int i) const
+  {
+    return nspecial[i][0] > 0 || (nbroken && nbroken[i] > 0.0) || (ndebonded && ndebonded[i] > 0.0);
+  }
+
+ private:
+  int **nspecial;
+  const double *nbroken, *ndebonded;
+};
 
 // Rest length of the bond i-j (tether or lamella): the distance of the nodes' reference positions.
 inline double rest_length(double *const *ref, int i, int j)

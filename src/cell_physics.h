@@ -79,6 +79,21 @@ inline double repulsion84_energy(double f0, double r0, double rsq)
 }
 
 /* ---------------------------------------------------------------------
+   Damping (Eq. 11): -gamma v_ij on a bonded pair (wall tethers, lamella
+   bonds) and the contact damping f'_k v_ik of an 8-4 contact, both taken
+   along the line of centres so that, like the elastic forces, they conserve
+   angular momentum. damping_fpair returns the factor multiplying
+   r_ij = x_i - x_j in the force on i (LAMMPS "fpair"):
+     F_i = -gamma (v_ij . r_ij) / r^2 r_ij = -gamma (v_ij . e_ij) e_ij,
+   with rdotv = r_ij . v_ij. It dissipates -gamma (v_ij . e_ij)^2 <= 0.
+------------------------------------------------------------------------ */
+
+inline double damping_fpair(double gamma, double rdotv, double rsq)
+{
+  return -gamma * rdotv / rsq;
+}
+
+/* ---------------------------------------------------------------------
    Thin spherical shell, breathing mode in vacuo (Eq. A5):
      omega = (1/R) sqrt(4 E / rho_s),  rho_s = M_wall / (4 pi R^2 t0).
 ------------------------------------------------------------------------ */
@@ -150,11 +165,62 @@ inline double tait_dpdrho(double rho, double rho0, double c)
   return c * c * x2 * x2 * x2;
 }
 
+// Internal energy per mass of the Tait fluid (Eq. 6), e(rho) = int_rho0^rho P(r) / r^2 dr, zero at
+// rho0. With de/drho = P / rho^2 the pressure force of Eq. 5 and the continuity rate of Eq. 7
+// conserve kinetic + internal energy of the inviscid fluid: the pair energy of pair cell/sph.
+inline double tait_internal_energy(double rho, double rho0, double c, double P0)
+{
+  const double k = rho0 * c * c / 7.0;
+  const double r6 = std::pow(rho / rho0, 6.0);
+  return (P0 - k) * (1.0 / rho0 - 1.0 / rho) + k / rho0 * (r6 - 1.0) / 6.0;
+}
+
+// SPH pair force (Eq. 5) on particle i from j, F_ij = fp r_ij + fv v_ij with r_ij = x_i - x_j,
+// v_ij = v_i - v_j and grad_i W_ij = wr r_ij, wr = (dW/dr) / r (kernel_dwdr / r). The pressure
+// part fp is central, with prho2 = P / rho^2 of each particle (computed once per particle):
+inline double sph_pressure_fpair(double mi, double mj, double prho2_i, double prho2_j, double wr)
+{
+  return -mi * mj * (prho2_i + prho2_j) * wr;
+}
+
+// and the Morris laminar viscosity of Eq. 5 acts along v_ij: fv = m_i m_j (mu_i + mu_j) /
+// (rho_i rho_j) wr. Both are symmetric in i, j, so F_ji = -F_ij (momentum is conserved); wr <= 0
+// makes fv v_ij . v_ij <= 0 (the viscosity only dissipates).
+inline double sph_viscous_fvel(double mi, double mj, double mu_i, double mu_j, double rho_i,
+                               double rho_j, double wr)
+{
+  return mi * mj * (mu_i + mu_j) / (rho_i * rho_j) * wr;
+}
+
+// One pair's term of the continuity equation (Eq. 7): v_ij . grad_i W_ij, with dv = v_i - v_j and
+// del = x_i - x_j. drho_i/dt gains m_j times it and drho_j/dt m_i times it (grad_j W_ji =
+// -grad_i W_ij and v_ji = -v_ij).
+inline double continuity_term(double dvx, double dvy, double dvz, double delx, double dely,
+                              double delz, double wr)
+{
+  return (dvx * delx + dvy * dely + dvz * delz) * wr;
+}
+
+// Density change over a step dt (Eq. 9): the continuity rate drho_dt (Eq. 7) plus the density
+// the mass change dm brings at constant particle volume, (rho / m) dm, from rho = m / V (Eq. 8).
+// With drho_dt = 0 the particle's volume m / rho is kept to round-off.
+inline double density_increment(double rho, double m, double drho_dt, double dt, double dm)
+{
+  return dt * drho_dt + rho / m * dm;
+}
+
+// Coefficient k = A_c L_p rho / N_f of the osmotic exchange of one fluid particle (Eq. 10):
+// dm/dt = -k (P + Pi). A_c is the current wall area of its cell, N_f the cell's fluid count.
+inline double osmotic_coefficient(double area, double Lp, double rho, double nfluid)
+{
+  return area * Lp * rho / nfluid;
+}
+
 // Osmotic mass rate of one fluid particle (Eq. 10): dm/dt = -(A_c L_p rho / N_f)(P + Pi), with
 // Pi < 0 the osmotic potential; water flows in while P < -Pi.
 inline double osmotic_mass_rate(double area, double Lp, double rho, int nfluid, double P, double Pi)
 {
-  return -area * Lp * rho / nfluid * (P + Pi);
+  return -osmotic_coefficient(area, Lp, rho, nfluid) * (P + Pi);
 }
 
 // Mass taken up in one step dt by a particle of mass m and density rho at pressure P, with
@@ -182,6 +248,17 @@ inline double triangle_area(const double *u, const double *w)
   const double cy = u[2] * w[0] - u[0] * w[2];
   const double cz = u[0] * w[1] - u[1] * w[0];
   return 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+}
+
+// Signed volume of the cone from the origin over the triangle (a, a + u, a + w): a . (u x w) / 6.
+// Summed over a closed mesh whose triangles are in right-hand order seen from outside (outward
+// normals, the contract of cell_fields.h) it is the enclosed volume (divergence theorem).
+inline double cone_volume(const double *a, const double *u, const double *w)
+{
+  const double cx = u[1] * w[2] - u[2] * w[1];
+  const double cy = u[2] * w[0] - u[0] * w[2];
+  const double cz = u[0] * w[1] - u[1] * w[0];
+  return (a[0] * cx + a[1] * cy + a[2] * cz) / 6.0;
 }
 
 // Signed solid angle of triangle (a, b, c) seen from the origin (van Oosterom & Strackee 1983).
@@ -235,6 +312,50 @@ inline double origin_triangle_dist_sq(const double *a, const double *b, const do
   }
   const double den = 1.0 / (va + vb + vc);
   return at(vb * den, vc * den);
+}
+
+/* ---------------------------------------------------------------------
+   Observables of the paper
+------------------------------------------------------------------------ */
+
+// Equatorial force (Eq. 23): the internal force that the bonds crossing the plane through the
+// cell centre carry from one hemisphere to the other. The hemisphere is the nodes at height
+// s = (x - centre) . n > 0, so a node on the plane belongs to exactly one side.
+inline bool crosses_equator(double s1, double s2)
+{
+  return (s1 > 0.0) != (s2 > 0.0);
+}
+
+// One bond's share of Eq. 23: the force on the node above the plane from the one below, along
+// -n; positive in tension. fpair is the bond's force factor (force on node 1 = fpair (x1 - x2),
+// negative in tension), dn = (x1 - x2) . n, s1 and s2 the nodes' heights. Zero if the bond does
+// not cross, and the same whichever node is called 1.
+inline double equatorial_force_term(double fpair, double dn, double s1, double s2)
+{
+  if (!crosses_equator(s1, s2)) return 0.0;
+  return (s1 > s2) ? -fpair * dn : fpair * dn;
+}
+
+// Protoplasm shear stress (Eqs. 24-26). Eq. 25 estimates the velocity gradient of particle i as
+//   g[a][b] = sum_j (m_j / rho_j) v_ji^b dW_ij/dx_i^a,  v_ji = v_j - v_i,
+// with dW_ij/dx_i^a = (dW/dr / r) del^a, del = x_i - x_j; this adds neighbour j's term with
+// w = (m_j / rho_j) (dW/dr) / r.
+inline void velocity_gradient_add(double g[3][3], double w, const double *del, const double *vji)
+{
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) g[a][b] += w * del[a] * vji[b];
+}
+
+// Off-diagonal viscous stress tau^ab = mu (dv^b/dx^a + dv^a/dx^b) (Eq. 24) from that gradient.
+inline double viscous_shear(double mu, const double g[3][3], int a, int b)
+{
+  return mu * (g[a][b] + g[b][a]);
+}
+
+// Total effective shear stress (Eq. 26).
+inline double shear_stress_magnitude(double txy, double txz, double tyz)
+{
+  return std::sqrt(txy * txy + txz * txz + tyz * tyz);
 }
 
 /* ---------------------------------------------------------------------

@@ -34,6 +34,7 @@
 #include "compute_cell_props.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_cell_lamella_break.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -271,7 +272,7 @@ void ComputeCellContacts::compute_array()
   }
 
   // debonded bonds: the per-cell-pair table of fix cell_debonded (cell i, cell j, bonds, area)
-  auto *debonded = modify->get_fix_by_id("cell_debonded");
+  auto *debonded = modify->get_fix_by_id(FixCellLamellaBreak::ID);
   if (debonded && debonded->array_flag)
     for (int r = 0; r < debonded->size_array_rows; r++) {
       auto &g = global_row((int) debonded->compute_array(r, 0), (int) debonded->compute_array(r, 1));

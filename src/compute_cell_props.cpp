@@ -33,6 +33,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_cell_lamella_break.h"
 #include "fix_cell_tether_break.h"
 #include "force.h"
 #include "memory.h"
@@ -136,11 +137,10 @@ void ComputeCellProps::wall_centres(LAMMPS *lmp, int ncells, const PairCellSPH *
   Atom *atom = lmp->atom;
   std::vector<double> local(4 * (ncells + 1), 0.0), all(4 * (ncells + 1));
   double **x = atom->x;
+  const CellMech::WallNodes is_wall(lmp);
   for (int i = 0; i < atom->nlocal; i++) {
     const tagint m = atom->molecule[i];
-    // wall nodes: bonded atoms of the cell
-    if (m < 1 || m > ncells || (sph && sph->is_fluid(atom->type[i])) || atom->nspecial[i][0] == 0)
-      continue;
+    if (m < 1 || m > ncells || (sph && sph->is_fluid(atom->type[i])) || !is_wall(i)) continue;
     double xu[3];
     lmp->domain->unmap(x[i], atom->image[i], xu);
     for (int d = 0; d < 3; d++) local[4 * m + d] += xu[d];
@@ -190,7 +190,8 @@ void ComputeCellProps::compute_array()
   };
 
   // A broken tether takes its two triangles out of the wall (bond style cell/tether): after a
-  // failure the volume is that of the cones from the centre over the remaining triangles.
+  // failure the volume is that of the cones from the centre over the remaining triangles. The
+  // triangles' orientation and cell follow the contract of cell_fields.h.
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
     if (anglelist[n][3] <= 0) continue;
@@ -203,10 +204,8 @@ void ComputeCellProps::compute_array()
     rel(cc, m, pc);
     const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
     const double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
-    const double cr[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
-                          u[0] * w[1] - u[1] * w[0]};
-    local[NS * m + 0] += (pa[0] * cr[0] + pa[1] * cr[1] + pa[2] * cr[2]) / 6.0;
-    local[NS * m + 1] += 0.5 * sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+    local[NS * m + 0] += cone_volume(pa, u, w);
+    local[NS * m + 1] += triangle_area(u, w);
   }
 
   // broken tethers: each counted at both of its nodes by fix CELL_TETHER_BREAK
@@ -257,13 +256,11 @@ void ComputeCellProps::compute_array()
     rel(i2, m, p2);
     const double s1 = p1[0] * normal[0] + p1[1] * normal[1] + p1[2] * normal[2];
     const double s2 = p2[0] * normal[0] + p2[1] * normal[1] + p2[2] * normal[2];
-    // the hemisphere is the nodes with s > 0: a partition even for nodes on the plane
-    if ((s1 > 0.0) != (s2 > 0.0)) {
+    if (crosses_equator(s1, s2)) {
       double fforce;
       force->bond->single(type, rsq, i1, i2, fforce);
-      // force on the node above the plane from the one below, along -normal: tension > 0
       const double dn = del[0] * normal[0] + del[1] * normal[1] + del[2] * normal[2];
-      local[NS * m + 7] += (s1 > s2) ? -fforce * dn : fforce * dn;
+      local[NS * m + 7] += equatorial_force_term(fforce, dn, s1, s2);
     }
   }
 
@@ -293,7 +290,7 @@ void ComputeCellProps::compute_array()
 
   // debonded lamella: the per-cell-pair table of fix cell_debonded (identical on every rank;
   // columns cell i, cell j, bonds, area, ...) counted for both cells of each pair
-  auto *debonded = modify->get_fix_by_id("cell_debonded");
+  auto *debonded = modify->get_fix_by_id(FixCellLamellaBreak::ID);
   if (debonded && debonded->array_flag)
     for (int r = 0; r < debonded->size_array_rows; r++)
       for (int side = 0; side < 2; side++) {

@@ -102,13 +102,12 @@ void ComputeCellShearAtom::compute_peratom()
       const double r = sqrt(rsq);
       const double w = rmass[j] / rho[j] * kernel_dwdr(r, smooth) / r;
       const double vji[3] = {v[j][0] - v[i][0], v[j][1] - v[i][1], v[j][2] - v[i][2]};
-      for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++) g[a][b] += w * del[a] * vji[b];
+      velocity_gradient_add(g, w, del, vji);
     }
-    const double txy = mu[itype] * (g[0][1] + g[1][0]);
-    const double txz = mu[itype] * (g[0][2] + g[2][0]);
-    const double tyz = mu[itype] * (g[1][2] + g[2][1]);
-    tau[i][0] = sqrt(txy * txy + txz * txz + tyz * tyz);
+    const double txy = viscous_shear(mu[itype], g, 0, 1);
+    const double txz = viscous_shear(mu[itype], g, 0, 2);
+    const double tyz = viscous_shear(mu[itype], g, 1, 2);
+    tau[i][0] = shear_stress_magnitude(txy, txz, tyz);
     tau[i][1] = txy;
     tau[i][2] = txz;
     tau[i][3] = tyz;

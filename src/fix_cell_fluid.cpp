@@ -222,7 +222,7 @@ void FixCellFluid::cell_geometry()
       u[d] = x[b][d] - x[a][d];
       w[d] = x[c][d] - x[a][d];
     }
-    const tagint m = molecule[b];
+    const tagint m = molecule[b];    // the cell of the central node (contract: cell_fields.h)
     if (m >= 1 && m <= ncells) local[m] += triangle_area(u, w);
   }
   for (int i = 0; i < atom->nlocal; i++)
@@ -265,12 +265,12 @@ void FixCellFluid::pre_force(int /*vflag*/)
     double dm = 0.0;
     if (osmosis && m >= 1 && m <= ncells && nfluid[m] > 0) {
       const double P = sph->pressure(type[i], rho[i]);
-      const double k = area[m] * Lp * rho[i] / nfluid[m];
+      const double k = osmotic_coefficient(area[m], Lp, rho[i], nfluid[m]);
       dm = osmotic_mass_step(k, dt, P, Pi, sph->dpressure_drho(type[i], rho[i]), rho[i], rmass[i]);
       flux_local[m] += dm;
       flux_stale = 1;
     }
-    rho[i] += dt * rate + rho[i] / rmass[i] * dm;
+    rho[i] += density_increment(rho[i], rmass[i], rate, dt, dm);
     rmass[i] += dm;
   }
 }

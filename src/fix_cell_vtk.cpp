@@ -28,6 +28,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_cell_lamella_break.h"
 #include "fix_cell_tether_break.h"
 #include "force.h"
 #include "modify.h"
@@ -95,14 +96,11 @@ void FixCellVTK::write()
 
   // points: id, molecule, unwrapped position, displacement from the reference, broken tethers
   auto *broken = modify->get_fix_by_id(FixCellTetherBreak::ID);
-  auto *debonded = modify->get_fix_by_id("cell_debonded");
+  auto *debonded = modify->get_fix_by_id(FixCellLamellaBreak::ID);
+  const CellMech::WallNodes is_wall(lmp);
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
-    // a wall node has bonds, or had them: a node whose tethers have all broken is written too,
-    // so that the broken field counts every ruptured tether (fluid has neither)
-    const bool lost = (broken && broken->vector_atom[i] > 0.0) ||
-        (debonded && debonded->vector_atom[i] > 0.0);
-    if (!(mask[i] & groupbit) || (atom->nspecial[i][0] == 0 && !lost)) continue;
+    if (!(mask[i] & groupbit) || !is_wall(i)) continue;
     double xu[3];
     domain->unmap(x[i], atom->image[i], xu);
     mine.insert(mine.end(),
@@ -111,7 +109,8 @@ void FixCellVTK::write()
                  debonded ? debonded->vector_atom[i] : 0.0});
   }
   // triangles: three IDs, molecule, area strain, largest tether stretch (a broken tether has
-  // taken its triangles out of the topology: the crack is a hole in the surface)
+  // taken its triangles out of the topology: the crack is a hole in the surface). Their order
+  // gives the outward normal and their central node the group (contract: cell_fields.h).
   std::vector<double> tris;
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {

@@ -91,7 +91,7 @@ void PairCellLJ84::compute(int eflag, int vflag)
         const double dvx = v[i][0] - v[j][0];
         const double dvy = v[i][1] - v[j][1];
         const double dvz = v[i][2] - v[j][2];
-        fpair -= gamma[itype][jtype] * (delx * dvx + dely * dvy + delz * dvz) / rsq;
+        fpair += damping_fpair(gamma[itype][jtype], delx * dvx + dely * dvy + delz * dvz, rsq);
       }
       fpair *= factor_lj;
 

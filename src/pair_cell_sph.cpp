@@ -20,6 +20,7 @@
 #include "pair_cell_sph.h"
 
 #include "cell_compat.h"
+#include "cell_fields.h"
 
 #include "atom.h"
 #include "cell_physics.h"
@@ -42,7 +43,7 @@ using namespace CellPhysics;
 
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
-    irho(-1), idrho(-1), nmax(0), prho2(nullptr), pairs_step(-1)
+    irho(-1), idrho(-1), nmax(0), prho2(nullptr), pairs_step(-1), pairs_build(-1), pairs_nall(-1)
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -149,12 +150,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     if (fluid[t]) {
       prho2[i] = pressure(t, rho[i]) / (rho[i] * rho[i]);
       if (i < nlocal && eflag) {
-        // internal energy e(rho) = int_rho0^rho P/r^2 dr of the Tait law
-        const double k = rho0[t] * c[t] * c[t] / 7.0;
-        const double r6 = pow(rho[i] / rho0[t], 6.0);
-        const double e =
-            (P0[t] - k) * (1.0 / rho0[t] - 1.0 / rho[i]) + k / rho0[t] * (r6 - 1.0) / 6.0;
-        const double ei = rmass[i] * e;
+        const double ei = rmass[i] * tait_internal_energy(rho[i], rho0[t], c[t], P0[t]);
         if (eflag_global) eng_vdwl += ei;
         if (eflag_atom) eatom[i] += ei;
       }
@@ -171,9 +167,9 @@ void PairCellSPH::compute(int eflag, int vflag)
     const double dvy = v[i][1] - v[j][1];
     const double dvz = v[i][2] - v[j][2];
 
-    // pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
-    const double fp = -mi * mj * (prho2[i] + prho2[j]) * wr;
-    const double fv = mi * mj * (mu[itype] + mu[jtype]) / (rho[i] * rho[j]) * wr;
+    // Eq. 5: pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
+    const double fp = sph_pressure_fpair(mi, mj, prho2[i], prho2[j], wr);
+    const double fv = sph_viscous_fvel(mi, mj, mu[itype], mu[jtype], rho[i], rho[j], wr);
     const double fx = fp * delx + fv * dvx;
     const double fy = fp * dely + fv * dvy;
     const double fz = fp * delz + fv * dvz;
@@ -189,14 +185,10 @@ void PairCellSPH::compute(int eflag, int vflag)
     if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
   };
 
-  if (pairs_step == update->ntimestep) {
-    // continuity() found the interacting pairs and their kernel gradients at these positions, in
-    // pre_force just before this call. Used once: any later call this step (run 0 after moving
-    // atoms, a line search) recomputes them.
+  if (pairs_of_continuity()) {
     for (std::size_t k = 0; k < pair_i.size(); k++)
       interact(pair_i[k], pair_j[k], pair_wr[k], pair_del[3 * k], pair_del[3 * k + 1],
                pair_del[3 * k + 2]);
-    pairs_step = -1;
   } else
     for_each_fluid_pair(interact);
 
@@ -225,18 +217,44 @@ void PairCellSPH::continuity()
   pair_wr.clear();
   pair_del.clear();
   pairs_step = update->ntimestep;
+  pairs_build = neighbor->ncalls;
+  pairs_nall = nall;
 
   for_each_fluid_pair([&](int i, int j, double wr, double delx, double dely, double delz) {
     pair_i.push_back(i);
     pair_j.push_back(j);
     pair_wr.push_back(wr);
     pair_del.insert(pair_del.end(), {delx, dely, delz});
-    const double vdotw =
-        ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz) * wr;
+    const double vdotw = continuity_term(v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2],
+                                         delx, dely, delz, wr);
     drho[i] += rmass[j] * vdotw;
     if (newton_pair || j < nlocal) drho[j] += rmass[i] * vdotw;
   });
   if (newton_pair) comm->reverse_comm(this);
+}
+
+/* ----------------------------------------------------------------------
+   The coupling with fix cell/fluid. It calls continuity() in pre_force, after this step's
+   neighbour lists are built and before the forces, so that the density leapfrogs the velocity;
+   continuity() keeps the fluid pairs and kernel gradients it finds, and the force call that
+   follows at the same positions takes them instead of searching the neighbour list again.
+   True when they are this step's. They are used once: any later force call in the step (run 0
+   after moving atoms, a line search) searches again. The pairs are atom indices, valid only
+   while the atoms keep them: a neighbour-list build in between (a fix re-neighbouring in
+   pre_force after cell/fluid) would point them at other atoms, so that is an error.
+------------------------------------------------------------------------- */
+
+bool PairCellSPH::pairs_of_continuity()
+{
+  if (pairs_step != update->ntimestep) return false;
+  pairs_step = -1;
+  if (neighbor->ncalls != pairs_build || atom->nlocal + atom->nghost != pairs_nall)
+    error->one(FLERR,
+               "Pair style cell/sph: the neighbour lists were rebuilt between fix cell/fluid's "
+               "continuity pass (pre_force) and the pair forces of step {}; the fluid pairs kept "
+               "for the forces no longer match the atoms",
+               update->ntimestep);
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -341,11 +359,11 @@ void PairCellSPH::init_style()
                "Pair style cell/sph requires per-atom masses: add rmass to the fix property/atom "
                "(fix ID all property/atom rmass d_rho d_drho ...)");
   int flag, cols;
-  irho = atom->find_custom("rho", flag, cols);
+  irho = atom->find_custom(CellMech::RHO_FIELD, flag, cols);
   if (irho < 0 || flag != 1 || cols != 0)
     error->all(FLERR,
                "Pair style cell/sph requires the per-atom density d_rho of fix property/atom");
-  idrho = atom->find_custom("drho", flag, cols);
+  idrho = atom->find_custom(CellMech::DRHO_FIELD, flag, cols);
   if (idrho < 0 || flag != 1 || cols != 0)
     error->all(
         FLERR,
@@ -480,9 +498,9 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
   const double *rho = atom->dvector[irho];
   const double r = sqrt(rsq);
   const double wr = kernel_dwdr(r, s[itype][jtype]) / r;
-  fforce = -atom->rmass[i] * atom->rmass[j] *
-      (pressure(itype, rho[i]) / (rho[i] * rho[i]) + pressure(jtype, rho[j]) / (rho[j] * rho[j])) *
-      wr;
+  fforce = sph_pressure_fpair(atom->rmass[i], atom->rmass[j],
+                              pressure(itype, rho[i]) / (rho[i] * rho[i]),
+                              pressure(jtype, rho[j]) / (rho[j] * rho[j]), wr);
   return 0.0;
 }
 

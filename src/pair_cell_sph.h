@@ -38,7 +38,9 @@ class PairCellSPH : public Pair {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
-  void continuity();    // d_drho of local atoms from the current positions and velocities
+  // d_drho of local atoms from the current positions and velocities (Eq. 7). Called by fix
+  // cell/fluid in pre_force; keeps the fluid pairs it finds for compute() (pairs_of_continuity)
+  void continuity();
 
   // equation of state of a fluid type; used by fix cell/fluid and compute cell/props too
   bool is_fluid(int type) const { return fluid[type] != 0; }
@@ -55,12 +57,15 @@ class PairCellSPH : public Pair {
   int irho, idrho;               // indices of d_rho, d_drho in atom->dvector
   int nmax;
   double *prho2;    // P / rho^2 of local and ghost atoms, once per step
-  // interacting pairs found by continuity() at this step's positions, reused by compute()
-  bigint pairs_step;
+  // interacting pairs found by continuity() at this step's positions, reused by compute():
+  // the step, and the neighbour-list build and atom count they were found with
+  bigint pairs_step, pairs_build;
+  int pairs_nall;
   std::vector<int> pair_i, pair_j;
   std::vector<double> pair_wr, pair_del;
 
   void allocate();
+  bool pairs_of_continuity();
 
   // calls f(i, j, wr, delx, dely, delz) for every fluid-fluid pair of the neighbour list within
   // the kernel support, with grad_i W_ij = wr * del: the one loop both passes share

@@ -9,7 +9,8 @@
    conserved and the virial is (x_k - B) F_k.
    Fluid near a triangle is found in the full neighbor list of the
    triangle's central node (the angle's atom 2, which owns the angle with
-   newton_bond on) with cutoff r0 + reach, reach >= |B - x_b|. Forces on
+   newton_bond on: the triangle contract of cell_fields.h) with cutoff
+   r0 + reach, reach >= |B - x_b|. Forces on
    ghost nodes and ghost fluid reach their owners by the reverse
    communication of newton_pair on.
    pair_coeff I J f0 r0 [gamma] (as cell/lj84): triangles whose central node
@@ -102,7 +103,7 @@ void PairCellVirtual::compute(int eflag, int vflag)
       double fpair = repulsion84_fpair(f0[btype][ktype], r0bk, rsq);
       if (gamma[btype][ktype] > 0.0) {
         const double dot = dx * (v[k][0] - VB[0]) + dy * (v[k][1] - VB[1]) + dz * (v[k][2] - VB[2]);
-        fpair -= gamma[btype][ktype] * dot / rsq;
+        fpair += damping_fpair(gamma[btype][ktype], dot, rsq);
       }
       const double fx = fpair * dx, fy = fpair * dy, fz = fpair * dz;
       f[k][0] += fx;
