@@ -20,6 +20,7 @@
 
 #include "bond_cell_lamella.h"
 
+#include "cell_checks.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
 
@@ -285,6 +286,9 @@ void BondCellLamella::coeff(int narg, char **arg)
     error->all(FLERR, "bond_coeff cell/lamella: fracture energy Gc must be > 0, got {}", Gc_one);
   if (!(gamma_one >= 0.0))
     error->all(FLERR, "bond_coeff cell/lamella: damping gamma must be >= 0, got {}", gamma_one);
+  CellMech::require_magnitude(lmp, "bond_coeff cell/lamella", "strength sigma_c", sigma_one);
+  CellMech::require_magnitude(lmp, "bond_coeff cell/lamella", "fracture energy Gc", Gc_one);
+  CellMech::require_magnitude(lmp, "bond_coeff cell/lamella", "damping gamma", gamma_one);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {

@@ -17,6 +17,7 @@
 #include "atom.h"
 #include "cell_physics.h"
 #include "comm.h"
+#include "cell_checks.h"
 #include "error.h"
 #include "fix_cell_tether_break.h"
 #include "force.h"
@@ -56,6 +57,8 @@ BondCellTether::~BondCellTether()
 void BondCellTether::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  // every cell run has tethers: the one place that sees each step of each of them
+  CellMech::check_step_motion(lmp, "Bond style cell/tether");
 
   double **x = atom->x;
   double **v = atom->v;
@@ -229,6 +232,10 @@ void BondCellTether::coeff(int narg, char **arg)
     error->all(FLERR, "bond_coeff cell/tether: wall thickness t0 must be > 0, got {}", t0_one);
   if (gamma_one < 0.0)
     error->all(FLERR, "bond_coeff cell/tether: damping gamma must be >= 0, got {}", gamma_one);
+  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "shear modulus G", G_one);
+  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "wall thickness t0", t0_one);
+  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "damping gamma", gamma_one);
+  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "critical stretch lamf", lamf_one);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {

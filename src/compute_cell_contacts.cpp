@@ -135,9 +135,10 @@ void ComputeCellContacts::compute_array()
   int *type = atom->type;
   tagint *molecule = atom->molecule;
 
-  const int ncells = ComputeCellProps::count_cells(lmp);
+  CellMech::CellIndex cells;
+  cells.build(lmp);
   std::vector<double> c;
-  ComputeCellProps::wall_centres(lmp, ncells, sph, c);
+  ComputeCellProps::wall_centres(lmp, cells, sph, c);
 
   // each node's share of its triangles' current area, summed on the owner
   if (atom->nmax > nmax) {
@@ -285,9 +286,10 @@ void ComputeCellContacts::compute_array()
     const int m1 = kv.first.first, m2 = kv.first.second;
     auto &r = kv.second;
     double n[3], len = 0.0;
-    if (m1 >= 1 && m2 <= ncells)
+    const int s1 = cells.slot(m1), s2 = cells.slot(m2);
+    if (s1 >= 1 && s2 >= 1)
       for (int d = 0; d < 3; d++) {
-        n[d] = c[3 * m2 + d] - c[3 * m1 + d];
+        n[d] = c[3 * s2 + d] - c[3 * s1 + d];
         len += n[d] * n[d];
       }
     len = sqrt(len);

@@ -3,7 +3,8 @@
 
    compute ID group cell/props [normal nx ny nz] [leaks yes|no]
 
-   Global array, row m = cell (molecule ID) m:
+   Global array, one row per cell (molecule ID >= 1) in ascending order of
+   the IDs: row m is molecule m when the IDs are 1..N (cell_index.h):
      1 volume (divergence theorem over the wall triangles)  2 wall area
      3 mean fluid pressure  4 fluid mass  5 number of fluid particles
      6 mean and 7 max tether stretch l/l0
@@ -14,6 +15,7 @@
      13 broken tethers (wall rupture)
      14 intact middle-lamella bonds to other cells, 15 their glued area
      16 debonded lamella bonds, 17 their area (from fix cell_debonded)
+     18 the cell's molecule ID
    Bonds between two cells (molecule IDs) are lamella bonds: they count in
    14-17 only, never in the wall's stretch or equatorial force.
    Triangles are the angles of the topology, counted once (newton_bond on).
@@ -61,12 +63,20 @@ ComputeCellProps::ComputeCellProps(LAMMPS *_lmp, int narg, char **arg) :
     if (strcmp(arg[iarg], "normal") == 0) {
       if (iarg + 4 > narg)
         error->all(FLERR, "compute cell/props: 'normal' expects three components nx ny nz");
-      double len = 0.0;
+      // scaled by its largest component first: squaring 1e200 would overflow to a zero normal
+      double big = 0.0, len = 0.0;
       for (int d = 0; d < 3; d++) {
         normal[d] = utils::numeric(FLERR, arg[iarg + 1 + d], false, lmp);
+        big = MAX(big, fabs(normal[d]));
+      }
+      if (!(big > 0.0) || !std::isfinite(big))
+        error->all(FLERR,
+                   "compute cell/props: 'normal' must be a finite non-zero vector, got {} {} {}",
+                   arg[iarg + 1], arg[iarg + 2], arg[iarg + 3]);
+      for (int d = 0; d < 3; d++) {
+        normal[d] /= big;
         len += normal[d] * normal[d];
       }
-      if (len <= 0.0) error->all(FLERR, "compute cell/props: 'normal' must not be zero");
       for (int d = 0; d < 3; d++) normal[d] /= sqrt(len);
       iarg += 4;
     } else if (strcmp(arg[iarg], "leaks") == 0) {
@@ -103,6 +113,13 @@ void ComputeCellProps::init()
     error->all(FLERR,
                "Compute cell/props requires an angle style (angle_style zero nocoeff) so "
                "that LAMMPS lists the wall triangles");
+  // volume, area and leaks are sums over the triangles: without them they would read 0
+  if (atom->nbonds > 0 && atom->nangles == 0)
+    error->all(FLERR,
+               "Compute cell/props: the walls have {} tethers (bonds) but no triangles (angles); "
+               "volume, area and leak counts are sums over the triangles and would read 0 (give "
+               "the data file's Angles section, as cellgen.py writes it)",
+               atom->nbonds);
   int flag, cols;
   // bond style cell/tether (required above) has checked that the reference positions exist
   iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
@@ -123,24 +140,17 @@ void ComputeCellProps::allocate(int n)
    centre of each cell: mean of its unwrapped wall nodes (atoms in bonds)
 ------------------------------------------------------------------------- */
 
-int ComputeCellProps::count_cells(LAMMPS *lmp)
-{
-  tagint maxmol_local = 0, maxmol = 0;
-  for (int i = 0; i < lmp->atom->nlocal; i++) maxmol_local = MAX(maxmol_local, lmp->atom->molecule[i]);
-  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, lmp->world);
-  return (int) maxmol;
-}
-
-void ComputeCellProps::wall_centres(LAMMPS *lmp, int ncells, const PairCellSPH *sph,
-                                    std::vector<double> &c)
+void ComputeCellProps::wall_centres(LAMMPS *lmp, const CellMech::CellIndex &cells,
+                                    const PairCellSPH *sph, std::vector<double> &c)
 {
   Atom *atom = lmp->atom;
+  const int ncells = cells.size();
   std::vector<double> local(4 * (ncells + 1), 0.0), all(4 * (ncells + 1));
   double **x = atom->x;
   const CellMech::WallNodes is_wall(lmp);
   for (int i = 0; i < atom->nlocal; i++) {
-    const tagint m = atom->molecule[i];
-    if (m < 1 || m > ncells || (sph && sph->is_fluid(atom->type[i])) || !is_wall(i)) continue;
+    const int m = cells.slot(atom->molecule[i]);
+    if (m < 1 || (sph && sph->is_fluid(atom->type[i])) || !is_wall(i)) continue;
     double xu[3];
     lmp->domain->unmap(x[i], atom->image[i], xu);
     for (int d = 0; d < 3; d++) local[4 * m + d] += xu[d];
@@ -170,10 +180,11 @@ void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
 
-  allocate(count_cells(lmp));
+  cells.build(lmp);
+  allocate(cells.size());
 
   std::vector<double> c;
-  wall_centres(lmp, ncells, sph, c);
+  wall_centres(lmp, cells, sph, c);
 
   // sums per cell: volume, area, pressure, mass, nfluid, stretch sum, nbonds, feq, broken
   // tethers, lamella bonds, glued area | max stretch
@@ -184,7 +195,7 @@ void ComputeCellProps::compute_array()
   double **ref = atom->darray[iref];
   tagint *molecule = atom->molecule;
 
-  auto rel = [&](int i, tagint m, double *out) {
+  auto rel = [&](int i, int m, double *out) {
     for (int d = 0; d < 3; d++) out[d] = x[i][d] - c[3 * m + d];
     CellMech::minimum_image(domain, FLERR, out[0], out[1], out[2]);
   };
@@ -196,8 +207,8 @@ void ComputeCellProps::compute_array()
   for (int n = 0; n < neighbor->nanglelist; n++) {
     if (anglelist[n][3] <= 0) continue;
     const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
-    const tagint m = molecule[b];
-    if (m < 1 || m > ncells) continue;
+    const int m = cells.slot(molecule[b]);
+    if (m < 1) continue;
     double pa[3], pb[3], pc[3];
     rel(a, m, pa);
     rel(b, m, pb);
@@ -212,16 +223,15 @@ void ComputeCellProps::compute_array()
   auto *broken = modify->get_fix_by_id(FixCellTetherBreak::ID);
   if (broken)
     for (int i = 0; i < atom->nlocal; i++) {
-      const tagint m = molecule[i];
-      if (m >= 1 && m <= ncells) local[NS * m + 8] += 0.5 * broken->vector_atom[i];
+      const int m = cells.slot(molecule[i]);
+      if (m >= 1) local[NS * m + 8] += 0.5 * broken->vector_atom[i];
     }
 
   if (sph) {
     const double *rho = sph->rho_array();
     for (int i = 0; i < atom->nlocal; i++) {
-      const tagint m = molecule[i];
-      if (m < 1 || m > ncells || !sph->is_fluid(atom->type[i]) || !(atom->mask[i] & groupbit))
-        continue;
+      const int m = cells.slot(molecule[i]);
+      if (m < 1 || !sph->is_fluid(atom->type[i]) || !(atom->mask[i] & groupbit)) continue;
       local[NS * m + 2] += sph->pressure(atom->type[i], rho[i]);
       local[NS * m + 3] += atom->rmass[i];
       local[NS * m + 4] += 1.0;
@@ -232,14 +242,14 @@ void ComputeCellProps::compute_array()
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int i1 = bondlist[n][0], i2 = bondlist[n][1], type = bondlist[n][2];
     if (type <= 0) continue;
-    const tagint m = molecule[i1];
-    if (m < 1 || m > ncells) continue;
-    if (molecule[i2] != m) {
+    const int m = cells.slot(molecule[i1]);
+    if (m < 1) continue;
+    if (molecule[i2] != molecule[i1]) {
       // a middle-lamella bond glues this cell to another: both cells count it and its area
       const double *alam = ialam >= 0 ? atom->dvector[ialam] : nullptr;
       const double area = alam ? CellMech::lamella_area(alam, i1, i2) : 0.0;
-      for (const tagint mm : {m, molecule[i2]})
-        if (mm >= 1 && mm <= ncells) {
+      for (const int mm : {m, cells.slot(molecule[i2])})
+        if (mm >= 1) {
           local[NS * mm + 9] += 1.0;
           local[NS * mm + 10] += area;
         }
@@ -286,6 +296,7 @@ void ComputeCellProps::compute_array()
     row[NLAMELLA] = s[9];
     row[GLUED_AREA] = s[10];
     row[NDEBONDED] = row[DEBONDED_AREA] = 0.0;
+    row[MOLECULE] = (double) cells.id(m);
   }
 
   // debonded lamella: the per-cell-pair table of fix cell_debonded (identical on every rank;
@@ -294,8 +305,8 @@ void ComputeCellProps::compute_array()
   if (debonded && debonded->array_flag)
     for (int r = 0; r < debonded->size_array_rows; r++)
       for (int side = 0; side < 2; side++) {
-        const int m = (int) debonded->compute_array(r, side);
-        if (m < 1 || m > ncells) continue;
+        const int m = cells.slot((tagint) debonded->compute_array(r, side));
+        if (m < 1) continue;
         array[m - 1][NDEBONDED] += debonded->compute_array(r, 2);
         array[m - 1][DEBONDED_AREA] += debonded->compute_array(r, 3);
       }
@@ -316,8 +327,8 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
     if (anglelist[n][3] <= 0) continue;
-    const tagint m = molecule[anglelist[n][1]];
-    if (m < 1 || m > ncells) continue;
+    const int m = cells.slot(molecule[anglelist[n][1]]);
+    if (m < 1) continue;
     mine.push_back((double) m);
     for (int k = 0; k < 3; k++) {
       double p[3];
@@ -361,9 +372,8 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
 
   std::vector<double> out_local(ncells + 1, 0.0), out_all(ncells + 1);
   for (int i = 0; i < atom->nlocal; i++) {
-    const tagint m = molecule[i];
-    if (m < 1 || m > ncells || !sph || !sph->is_fluid(atom->type[i]) || !(atom->mask[i] & groupbit))
-      continue;
+    const int m = cells.slot(molecule[i]);
+    if (m < 1 || !sph || !sph->is_fluid(atom->type[i]) || !(atom->mask[i] & groupbit)) continue;
     double p[3];
     for (int d = 0; d < 3; d++) p[d] = x[i][d] - c[3 * m + d];
     CellMech::minimum_image(domain, FLERR, p[0], p[1], p[2]);

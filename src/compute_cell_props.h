@@ -14,6 +14,7 @@ ComputeStyle(cell/props,ComputeCellProps);
 #ifndef LMP_COMPUTE_CELL_PROPS_H
 #define LMP_COMPUTE_CELL_PROPS_H
 
+#include "cell_index.h"
 #include "compute.h"
 
 #include <vector>
@@ -40,6 +41,7 @@ class ComputeCellProps : public Compute {
     GLUED_AREA,
     NDEBONDED,
     DEBONDED_AREA,
+    MOLECULE,
     NCOL
   };
 
@@ -49,17 +51,16 @@ class ComputeCellProps : public Compute {
   void compute_array() override;
   int lock_length() override;
 
-  // centre of each cell 1..ncells (mean of its unwrapped wall nodes) into c[3m..3m+2], the same
-  // on every rank; shared with compute cell/contacts
-  // cells are molecules 1..N: N is the largest molecule ID on any rank
-  static int count_cells(class LAMMPS *);
-  static void wall_centres(class LAMMPS *, int ncells, const class PairCellSPH *,
-                           std::vector<double> &c);
+  // centre of the cell in each slot 1..N of cells (mean of its unwrapped wall nodes) into
+  // c[3m..3m+2], the same on every rank; shared with compute cell/contacts
+  static void wall_centres(class LAMMPS *, const CellMech::CellIndex &cells,
+                           const class PairCellSPH *, std::vector<double> &c);
 
  protected:
   double normal[3];
   int leaks;    // 1: count fluid outside its wall (O(N_fluid x N_triangles) per call)
   int ncells;
+  CellMech::CellIndex cells;    // row m is the cell in slot m (ascending molecule IDs)
   class PairCellSPH *sph;
   class BondCellTether *tether;
   int ialam;    // per-atom lamella area d_alam (tissue), -1 without one

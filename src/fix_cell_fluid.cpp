@@ -26,10 +26,11 @@
 #include "cell_compat.h"
 
 #include "atom.h"
+#include "cell_checks.h"
 #include "cell_physics.h"
 #include "comm.h"
-#include "compute_cell_props.h"
 #include "error.h"
+#include "fix_cell_tether_break.h"
 #include "force.h"
 #include "group.h"
 #include "memory.h"
@@ -53,7 +54,7 @@ using namespace CellPhysics;
 
 FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
     Fix(_lmp, narg, arg), Pi(0.0), Lp(0.0), dt(0.0), ilevel_respa(0), ncells(0), area(nullptr),
-    nfluid(nullptr), flux_local(nullptr), flux_all(nullptr), flux_restart(nullptr), flux_stale(1),
+    nfluid(nullptr), nbroken(nullptr), flux_local(nullptr), flux_all(nullptr), flux_stale(1),
     sph(nullptr)
 {
   if (narg != 7)
@@ -61,10 +62,12 @@ FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
                "Illegal fix cell/fluid command: expected 'fix ID group cell/fluid Pi value Lp "
                "value', got {} arguments after the group",
                narg - 3);
-  if (strcmp(arg[3], "Pi") != 0 || strcmp(arg[5], "Lp") != 0)
+  // both keywords, in either order, each once
+  if (strcmp(arg[3], arg[5]) == 0)
     error->all(FLERR,
-               "Illegal fix cell/fluid command: expected 'Pi value Lp value', got '{} {} {} {}'",
-               arg[3], arg[4], arg[5], arg[6]);
+               "Illegal fix cell/fluid command: keyword '{}' given twice; expected 'Pi value Lp "
+               "value' (in either order)",
+               arg[3]);
   modify_param(2, &arg[3]);
   modify_param(2, &arg[5]);
   if (!atom->molecule_flag)
@@ -83,9 +86,9 @@ FixCellFluid::~FixCellFluid()
 {
   memory->destroy(area);
   memory->destroy(nfluid);
+  memory->destroy(nbroken);
   memory->destroy(flux_local);
   memory->destroy(flux_all);
-  memory->destroy(flux_restart);
 }
 
 int FixCellFluid::setmask()
@@ -107,10 +110,12 @@ int FixCellFluid::modify_param(int narg, char **arg)
     if (Pi > 0.0)
       error->all(FLERR,
                  "fix cell/fluid: osmotic potential Pi must be <= 0 (water potential), got {}", Pi);
+    CellMech::require_magnitude(lmp, "fix cell/fluid", "osmotic potential Pi", Pi);
   } else if (strcmp(arg[0], "Lp") == 0) {
     Lp = utils::numeric(FLERR, arg[1], false, lmp);
     if (Lp < 0.0)
       error->all(FLERR, "fix cell/fluid: hydraulic conductivity Lp must be >= 0, got {}", Lp);
+    CellMech::require_magnitude(lmp, "fix cell/fluid", "hydraulic conductivity Lp", Lp);
   } else
     error->all(FLERR, "Unknown keyword '{}' for fix cell/fluid: expected 'Pi' or 'Lp'", arg[0]);
   return 2;
@@ -145,7 +150,7 @@ void FixCellFluid::init()
                  "Fix cell/fluid with run_style respa requires the pair styles on the outermost "
                  "level (e.g. run_style respa 2 2 bond 1 angle 1 pair 2)");
   }
-  grow_cells();
+  index_cells();
 }
 
 /* ----------------------------------------------------------------------
@@ -179,24 +184,30 @@ void FixCellFluid::check_group()
   }
 }
 
-void FixCellFluid::grow_cells()
+/* ----------------------------------------------------------------------
+   the cells present and their slots; each rank's uptake totals follow their cells' molecule IDs
+   when the slots change (a cell appears or disappears) and take up a restart file's totals
+------------------------------------------------------------------------- */
+
+void FixCellFluid::index_cells()
 {
-  const int maxmol = ComputeCellProps::count_cells(lmp);
-  if (maxmol <= ncells) return;
-  const int old = ncells;
-  ncells = (int) maxmol;
-  memory->grow(area, ncells + 1, "cell/fluid:area");
-  memory->grow(nfluid, ncells + 1, "cell/fluid:nfluid");
-  memory->grow(flux_local, ncells + 1, "cell/fluid:flux_local");
-  memory->grow(flux_all, ncells + 1, "cell/fluid:flux_all");
-  for (int m = old + 1; m <= ncells; m++) flux_local[m] = 0.0;
-  if (flux_restart) {
-    // the restart's totals were kept on rank 0 only, so they are summed once
-    if (comm->me == 0)
-      for (int m = 1; m <= ncells && m <= (int) flux_restart[0]; m++)
-        flux_local[m] += flux_restart[m];
-    memory->destroy(flux_restart);
+  const std::vector<tagint> old = cells.molecule_ids();
+  cells.build(lmp);
+  if (cells.molecule_ids() == old && flux_restart.empty() && flux_local) return;
+  const int n = cells.size();
+  std::vector<double> flux(n + 1, 0.0);
+  for (int k = 1; k <= (int) old.size(); k++) flux[cells.slot(old[k - 1])] += flux_local[k];
+  // the restart's totals were kept on rank 0 only, so they are summed once
+  if (comm->me == 0)
+    for (const auto &kv : flux_restart) flux[cells.slot(kv.first)] += kv.second;
+  flux_restart.clear();
+  flux[0] = 0.0;    // slot 0: IDs that left
+  ncells = n;
+  for (double **a : {&area, &nfluid, &nbroken, &flux_local, &flux_all}) {
+    memory->destroy(*a);
+    memory->create(*a, ncells + 1, "cell/fluid:percell");
   }
+  for (int m = 0; m <= ncells; m++) flux_local[m] = flux[m];
   size_vector = ncells;
   flux_stale = 1;
 }
@@ -211,7 +222,8 @@ void FixCellFluid::cell_geometry()
   double **x = atom->x;
   tagint *molecule = atom->molecule;
   int *mask = atom->mask;
-  std::vector<double> local(2 * (ncells + 1), 0.0), all(2 * (ncells + 1));
+  const int n1 = ncells + 1;
+  std::vector<double> local(3 * n1, 0.0), all(3 * n1);
 
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
@@ -222,17 +234,26 @@ void FixCellFluid::cell_geometry()
       u[d] = x[b][d] - x[a][d];
       w[d] = x[c][d] - x[a][d];
     }
-    const tagint m = molecule[b];    // the cell of the central node (contract: cell_fields.h)
-    if (m >= 1 && m <= ncells) local[m] += triangle_area(u, w);
+    // the cell of the central node (contract: cell_fields.h)
+    const int m = cells.slot(molecule[b]);
+    if (m >= 1) local[m] += triangle_area(u, w);
   }
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((mask[i] & groupbit) && sph->is_fluid(atom->type[i]) && molecule[i] >= 1 &&
-        molecule[i] <= ncells)
-      local[ncells + 1 + molecule[i]] += 1.0;
-  MPI_Allreduce(local.data(), all.data(), 2 * (ncells + 1), MPI_DOUBLE, MPI_SUM, world);
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int m = cells.slot(molecule[i]);
+    if ((mask[i] & groupbit) && sph->is_fluid(atom->type[i]) && m >= 1) local[n1 + m] += 1.0;
+  }
+  // broken tethers, each counted at both of its nodes by fix CELL_TETHER_BREAK
+  auto *broken = modify->get_fix_by_id(FixCellTetherBreak::ID);
+  if (broken)
+    for (int i = 0; i < atom->nlocal; i++) {
+      const int m = cells.slot(molecule[i]);
+      if (m >= 1) local[2 * n1 + m] += broken->vector_atom[i];
+    }
+  MPI_Allreduce(local.data(), all.data(), 3 * n1, MPI_DOUBLE, MPI_SUM, world);
   for (int m = 0; m <= ncells; m++) {
     area[m] = all[m];
-    nfluid[m] = all[ncells + 1 + m];
+    nfluid[m] = all[n1 + m];
+    nbroken[m] = all[2 * n1 + m];
   }
 }
 
@@ -241,11 +262,13 @@ void FixCellFluid::cell_geometry()
 // at the start of a run the state is as given: nothing to advance, only cells to count
 void FixCellFluid::setup_pre_force(int /*vflag*/)
 {
-  grow_cells();
+  index_cells();
 }
 
 void FixCellFluid::pre_force(int /*vflag*/)
 {
+  // atoms change ranks or leave only when LAMMPS re-neighbors
+  if (neighbor->ago == 0) index_cells();
   sph->continuity();
   const bool osmosis = (Lp > 0.0);
   if (osmosis) cell_geometry();
@@ -261,9 +284,12 @@ void FixCellFluid::pre_force(int /*vflag*/)
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || !sph->is_fluid(type[i])) continue;
     double rate = drho[i];
-    const tagint m = molecule[i];
+    const int m = cells.slot(molecule[i]);
     double dm = 0.0;
-    if (osmosis && m >= 1 && m <= ncells && nfluid[m] > 0) {
+    // Eq. 10 needs the membrane that holds the solutes in: a wall with a broken tether has a
+    // hole (its triangles and their virtual particles are gone), its protoplast has burst, and
+    // its fluid, inside or escaped, no longer exchanges water osmotically
+    if (osmosis && m >= 1 && nfluid[m] > 0 && nbroken[m] == 0.0) {
       const double P = sph->pressure(type[i], rho[i]);
       const double k = osmotic_coefficient(area[m], Lp, rho[i], nfluid[m]);
       dm = osmotic_mass_step(k, dt, P, Pi, sph->dpressure_drho(type[i], rho[i]), rho[i], rmass[i]);
@@ -281,8 +307,8 @@ void FixCellFluid::pre_force_respa(int vflag, int ilevel, int /*iloop*/)
 }
 
 /* ----------------------------------------------------------------------
-   vector element m: mass taken up by cell m+1 through its wall since the
-   fix was defined (negative: lost)
+   vector element m: mass taken up by the cell in slot m+1 (ascending
+   molecule IDs) through its wall since the fix was defined (negative: lost)
 ------------------------------------------------------------------------- */
 
 double FixCellFluid::compute_vector(int m)
@@ -294,23 +320,36 @@ double FixCellFluid::compute_vector(int m)
   return flux_all[m + 1];
 }
 
+/* ----------------------------------------------------------------------
+   restart: -ncells, then (molecule ID, uptake) of each cell. Files of the
+   earlier format (ncells, then the uptake of molecules 1..ncells) still read.
+------------------------------------------------------------------------- */
+
 void FixCellFluid::write_restart(FILE *fp)
 {
-  std::vector<double> all(ncells + 1);
-  MPI_Allreduce(flux_local, all.data(), ncells + 1, MPI_DOUBLE, MPI_SUM, world);
-  all[0] = ncells;
+  std::vector<double> sum(ncells + 1), list(1 + 2 * ncells);
+  MPI_Allreduce(flux_local, sum.data(), ncells + 1, MPI_DOUBLE, MPI_SUM, world);
+  list[0] = -ncells;
+  for (int m = 1; m <= ncells; m++) {
+    list[2 * m - 1] = (double) cells.id(m);
+    list[2 * m] = sum[m];
+  }
   if (comm->me == 0) {
-    int size = (ncells + 1) * sizeof(double);
+    int size = list.size() * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(all.data(), sizeof(double), ncells + 1, fp);
+    fwrite(list.data(), sizeof(double), list.size(), fp);
   }
 }
 
 void FixCellFluid::restart(char *buf)
 {
   auto list = (double *) buf;
-  const int n = (int) list[0];
-  memory->create(flux_restart, n + 1, "cell/fluid:flux_restart");
-  for (int m = 0; m <= n; m++) flux_restart[m] = list[m];
-  flux_restart[0] = n;
+  flux_restart.clear();
+  if (list[0] < 0) {
+    const int n = (int) -list[0];
+    for (int m = 1; m <= n; m++) flux_restart[(tagint) list[2 * m - 1]] += list[2 * m];
+  } else {
+    const int n = (int) list[0];
+    for (int m = 1; m <= n; m++) flux_restart[m] += list[m];
+  }
 }

@@ -13,7 +13,10 @@ FixStyle(cell/fluid,FixCellFluid);
 #ifndef LMP_FIX_CELL_FLUID_H
 #define LMP_FIX_CELL_FLUID_H
 
+#include "cell_index.h"
 #include "fix.h"
+
+#include <map>
 
 namespace LAMMPS_NS {
 
@@ -35,14 +38,16 @@ class FixCellFluid : public Fix {
   double Pi, Lp;
   double dt;    // step of the level where the SPH forces are
   int ilevel_respa;
-  int ncells;                       // largest molecule ID: cells are 1..ncells
+  int ncells;                       // number of cells, in slots 1..ncells of cells
+  CellMech::CellIndex cells;
   double *area, *nfluid;            // per cell, current wall area and fluid count
+  double *nbroken;                  // per cell, broken tethers: its wall is open
   double *flux_local, *flux_all;    // per cell, mass added by osmosis since the fix was defined
-  double *flux_restart;
+  std::map<LAMMPS_NS::tagint, double> flux_restart;    // by molecule ID, from a restart file
   int flux_stale;
   class PairCellSPH *sph;
 
-  void grow_cells();
+  void index_cells();
   void check_group();
   void cell_geometry();
 };

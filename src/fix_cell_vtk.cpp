@@ -31,6 +31,7 @@
 #include "fix_cell_lamella_break.h"
 #include "fix_cell_tether_break.h"
 #include "force.h"
+#include "group.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "update.h"
@@ -74,6 +75,17 @@ void FixCellVTK::init()
                "Fix cell/vtk requires an angle style (angle_style zero nocoeff) so that "
                "LAMMPS lists the wall triangles");
   if (!force->newton_bond) error->all(FLERR, "Fix cell/vtk requires newton_bond on");
+  // a group without wall nodes (e.g. the fluid) would give files with no surface in them
+  const CellMech::WallNodes is_wall(lmp);
+  bigint nwall_local = 0, nwall = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && is_wall(i)) nwall_local++;
+  MPI_Allreduce(&nwall_local, &nwall, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (nwall == 0)
+    error->all(FLERR,
+               "Fix cell/vtk {}: group {} holds no wall nodes (atoms bonded by tethers); its "
+               "files would hold no surface. Use the group of the walls (e.g. 'group wall type 1')",
+               id, group->names[igroup]);
 }
 
 void FixCellVTK::setup(int /*vflag*/)

@@ -9,6 +9,7 @@
 
 #include "pair_cell_lj84.h"
 
+#include "cell_checks.h"
 #include "cell_compat.h"
 
 #include "atom.h"
@@ -159,6 +160,10 @@ void PairCellLJ84::coeff(int narg, char **arg)
   if (gamma_one < 0.0)
     error->all(FLERR, "pair_coeff {}: contact damping gamma must be >= 0, got {}", style_name,
                gamma_one);
+  const std::string command = std::string("pair_coeff ") + style_name;
+  CellMech::require_magnitude(lmp, command, "strength f0", f0_one);
+  CellMech::require_magnitude(lmp, command, "contact distance r0", r0_one);
+  CellMech::require_magnitude(lmp, command, "contact damping gamma", gamma_one);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {

@@ -19,6 +19,7 @@
 
 #include "pair_cell_sph.h"
 
+#include "cell_checks.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
 
@@ -322,6 +323,12 @@ void PairCellSPH::coeff(int narg, char **arg)
       error->all(FLERR, "pair_coeff cell/sph: viscosity mu must be >= 0, got {}", mu_one);
     if (s_one <= 0.0)
       error->all(FLERR, "pair_coeff cell/sph: smoothing length s must be > 0, got {}", s_one);
+    const char *cmd = "pair_coeff cell/sph";
+    CellMech::require_magnitude(lmp, cmd, "reference density rho0", rho0_one);
+    CellMech::require_magnitude(lmp, cmd, "sound speed c", c_one);
+    CellMech::require_magnitude(lmp, cmd, "background pressure P0", P0_one);
+    CellMech::require_magnitude(lmp, cmd, "viscosity mu", mu_one);
+    CellMech::require_magnitude(lmp, cmd, "smoothing length s", s_one);
     for (int i = ilo; i <= ihi; i++) {
       fluid[i] = 1;
       rho0[i] = rho0_one;

@@ -19,6 +19,7 @@
 
 #include "pair_cell_virtual.h"
 
+#include "cell_checks.h"
 #include "cell_compat.h"
 
 #include "atom.h"
@@ -74,11 +75,22 @@ void PairCellVirtual::compute(int eflag, int vflag)
       VB[d] = (v[a][d] + v[b][d] + v[c][d]) / 3.0;
     }
     const double ox = B[0] - x[b][0], oy = B[1] - x[b][1], oz = B[2] - x[b][2];
-    if (ox * ox + oy * oy + oz * oz > reachsq)
+    if (ox * ox + oy * oy + oz * oz > reachsq) {
+      // a wall that deforms strongly needs a larger reach; a node that jumped more than the
+      // skin in one step means the run blew up, and a larger reach would not help
+      const int nodes[3] = {a, b, c};
+      const auto moved = CellMech::fastest_step(lmp, nodes, 3);
+      const std::string why = moved.dist > neighbor->skin
+          ? "its " + CellMech::blow_up_advice(lmp, moved)
+          : fmt::format("its nodes moved at most {:.4g} in the last step (neighbor skin {:g}), "
+                        "so the wall is deformed, not blown up: increase reach in pair_style "
+                        "cell/virtual",
+                        moved.dist, neighbor->skin);
       error->one(FLERR,
                  "Pair style cell/virtual: triangle {}-{}-{} has its barycentre {:.4g} from its "
-                 "central node, beyond reach {}; increase reach in pair_style cell/virtual",
-                 tag[a], tag[b], tag[c], sqrt(ox * ox + oy * oy + oz * oz), reach);
+                 "central node, beyond reach {}; {}",
+                 tag[a], tag[b], tag[c], sqrt(ox * ox + oy * oy + oz * oz), reach, why);
+    }
     const int btype = type[b];
     if (!listed[btype])
       error->one(FLERR,
@@ -164,6 +176,7 @@ void PairCellVirtual::settings(int narg, char **arg)
                "pair_style cell/virtual: reach (largest barycentre-to-node distance) must be > 0, "
                "got {}",
                reach);
+  CellMech::require_magnitude(lmp, "pair_style cell/virtual", "reach", reach);
 }
 
 void PairCellVirtual::init_style()

@@ -120,7 +120,7 @@ def step0(d, common):
     T.check("step-0 forces agree on 1 and 2 ranks (1e-12)", ef < 1e-12, f"{ef:.1e}")
     T.check("step-0 density rates agree on 1 and 2 ranks (1e-12)", er < 1e-12, f"{er:.1e}")
     T.check("cell/props: every cell, every column, 1 vs 2 ranks (1e-12)",
-            a[1].shape == b[1].shape == (3, 17) and ep < 1e-12, f"{ep:.1e}")
+            a[1].shape == b[1].shape == (3, 18) and ep < 1e-12, f"{ep:.1e}")
     T.check("cell/contacts: pairs 1-2 and 2-3 glued and in contact, 1 vs 2 ranks (1e-12)",
             a[2].shape == b[2].shape and a[2].shape[0] == 2 and np.all(a[2][:, 2] > 0) and eq < 1e-12,
             f"{eq:.1e}")

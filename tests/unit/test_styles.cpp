@@ -429,7 +429,7 @@ TEST_F(Fluid, FixFluidBadInput)
   EXPECT_ERROR("fix f all cell/fluid Pi 100 Lp 1", "osmotic potential Pi must be <= 0");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Lp -1", "hydraulic conductivity Lp must be >= 0");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Lq 1",
-               "expected 'Pi value Lp value', got 'Pi -100 Lq 1'");
+               "Unknown keyword 'Lq' for fix cell/fluid: expected 'Pi' or 'Lp'");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Pi -1", "expected 'Pi value Lp value'");
   cmds({"fix f all cell/fluid Pi -100 Lp 0", "pair_style zero 3.0", "pair_coeff * *"});
   EXPECT_ERROR("run 0", "Fix cell/fluid requires pair style cell/sph");
@@ -441,7 +441,8 @@ TEST_F(Fluid, ComputePropsBadInput)
 {
   box();
   EXPECT_ERROR("compute p all cell/props normal 0 0", "'normal' expects three components");
-  EXPECT_ERROR("compute p all cell/props normal 0 0 0", "'normal' must not be zero");
+  EXPECT_ERROR("compute p all cell/props normal 0 0 0",
+               "'normal' must be a finite non-zero vector");
   EXPECT_ERROR("compute p all cell/props tilt 1", "Unknown keyword 'tilt' for compute cell/props");
   cmds({"compute p all cell/props", "pair_style zero 3.0", "pair_coeff * *",
         "variable v equal c_p[1][1]", "thermo_style custom step v_v"});
