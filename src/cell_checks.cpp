@@ -54,6 +54,12 @@ StepMotion fastest_step(LAMMPS *lmp, const int *atoms, int natoms)
 
 std::string blow_up_advice(LAMMPS *lmp, const StepMotion &m)
 {
+  if (!std::isfinite(m.speed))
+    return fmt::format(
+        "atom {} has a velocity that is not finite ({}): the run has gone to NaN or inf. The "
+        "likely cause is a blow-up from a time step too large (the example inputs use 0.001 us) "
+        "or a value set by hand that is not finite (a per-atom property, a velocity)",
+        m.tag, m.speed);
   return fmt::format(
       "atom {} moved {:.4g} distance units in one step (speed {:.4g} x time step {:g}), against "
       "a neighbor skin of {:g}: the run has blown up. The likely cause is a time step too large "

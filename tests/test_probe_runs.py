@@ -113,6 +113,14 @@ def blow_up_named(d):
         T.check(f"5.7 blow-up on {n} rank(s) names the time step with the numbers",
                 rc not in (0, None) and re.search(r"moved [0-9.e+-]+ .*in one step.*time step "
                                                   r"0\.02.*skin", err) is not None, err[:120])
+    # a run gone NaN (here by hand: inf - inf in every velocity) stops at once with the cause
+    text = (HEAD + MODEL + OSMOSIS + 'variable bad atom "(1e200*1e200)-(1e200*1e200)"\n'
+            "set group all vx v_bad\ntimestep 0.001\nthermo 1\nrun 100\n")
+    rc, out = run(text, d, "log.nan", screen=True)
+    err = error_line(out)
+    print(f"5.11 velocities NaN: rc {rc}: {err}")
+    T.check("5.11 a run gone NaN stops with the cause, not exit 0", rc not in (0, None) and
+            re.search(r"velocity that is not finite \(-?nan\).*NaN", err) is not None, err[:120])
 
 
 def sparse_molecule_ids(d):
