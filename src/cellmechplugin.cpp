@@ -12,6 +12,7 @@
 #include "lammps.h"
 #include "version.h"
 
+#include "angle_cell_membrane.h"
 #include "bond_cell_lamella.h"
 #include "bond_cell_tether.h"
 #include "compute_cell_contacts.h"
@@ -60,12 +61,14 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.author = "cellmech developers";
   plugin.handle = handle;
 
-  // pair, bond: constructed from LAMMPS alone (v1); fix, compute: with their arguments (v2)
+  // pair, bond, angle: constructed from LAMMPS alone (v1); fix, compute: with their arguments (v2)
   struct {
     const char *style, *name, *info;
     lammpsplugin_factory1 *v1;
     lammpsplugin_factory2 *v2;
   } styles[] = {
+      {"angle", "cell/membrane", "cellmech Neo-Hookean membrane element on each wall triangle",
+       &create<Angle, AngleCellMembrane>, nullptr},
       {"bond", "cell/tether", "cellmech Neo-Hookean cell wall tether",
        &create<Bond, BondCellTether>, nullptr},
       {"bond", "cell/lamella", "cellmech middle lamella: cohesive bond between cells",

@@ -1,0 +1,291 @@
+/* ----------------------------------------------------------------------
+   cellmech: angle style cell/membrane
+
+   Every wall triangle (an angle a-b-c of the topology, written by cellgen.py
+   with b its central node) is a constant-strain element of an incompressible
+   thin Neo-Hookean sheet of shear modulus G and thickness t0 (Eq. M1 in
+   cell_physics.h), measured against the triangle's own rest shape: the
+   reference positions d2_cellref of its nodes, the same per-atom array the
+   tethers take their rest lengths from. The forces are the exact gradient
+   of that energy (Eq. M2), so energy, momentum and angular momentum are
+   conserved and the virial is exact. Unlike a tether network, whose shear
+   modulus is 1.5 times the sheet's, the element has the sheet's response in
+   every deformation, not only in equibiaxial stretch.
+   Damping: each edge of a triangle carries gamma / 2 along it (Eq. 11), so a
+   wall edge, shared by two triangles, is damped as one tether of gamma.
+------------------------------------------------------------------------- */
+
+#include "angle_cell_membrane.h"
+
+#include "cell_compat.h"
+#include "cell_fields.h"
+
+#include "atom.h"
+#include "cell_physics.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace CellPhysics;
+
+// smallest area ratio of a triangle to its rest shape before the run stops: the element's energy
+// diverges as the area vanishes (the incompressible sheet thickens without bound), so a triangle
+// this small is an integration that has already failed, not a state of the wall
+static constexpr double MIN_AREA_RATIO = 1.0e-3;
+
+/* ---------------------------------------------------------------------- */
+
+AngleCellMembrane::AngleCellMembrane(LAMMPS *_lmp) :
+    Angle(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), iref(-1)
+{
+  born_matrix_enable = 0;
+  writedata = 1;
+}
+
+AngleCellMembrane::~AngleCellMembrane()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(G);
+    memory->destroy(t0);
+    memory->destroy(gamma);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AngleCellMembrane::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double **ref = atom->darray[iref];
+  int **anglelist = neighbor->anglelist;
+  const int nanglelist = neighbor->nanglelist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  double eangle = 0.0;
+
+  for (int n = 0; n < nanglelist; n++) {
+    const int type = anglelist[n][3];
+    if (type <= 0) continue;    // triangle of a broken wall
+    const int ia = anglelist[n][0], ib = anglelist[n][1], ic = anglelist[n][2];
+
+    double A[3], C[3], a[3], c[3];
+    for (int d = 0; d < 3; d++) {
+      A[d] = ref[ia][d] - ref[ib][d];
+      C[d] = ref[ic][d] - ref[ib][d];
+      a[d] = x[ia][d] - x[ib][d];
+      c[d] = x[ic][d] - x[ib][d];
+    }
+    MembraneRest rest;
+    if (!membrane_rest(A, C, rest))
+      error->one(FLERR,
+                 "Angle style cell/membrane: triangle {}-{}-{} has no area in its reference "
+                 "shape; are the d2_{} reference positions set and communicated to ghosts "
+                 "(ghost yes)?",
+                 atom->tag[ia], atom->tag[ib], atom->tag[ic], CellMech::REF_FIELD);
+    MembraneStrain s;
+    membrane_strain(rest, a, c, s);
+    if (!(s.J2 > MIN_AREA_RATIO * MIN_AREA_RATIO)) degenerate(ia, ib, ic, s.J2);
+
+    double fa[3], fc[3];
+    membrane_forces(G[type], t0[type], rest, s, fa, fc);
+    if (eflag) eangle = membrane_energy(G[type], t0[type], rest, s);
+
+    double fb[3] = {-fa[0] - fc[0], -fa[1] - fc[1], -fa[2] - fc[2]};
+    if (gamma[type] > 0.0) {
+      // half of Eq. 11 on each edge: a wall edge belongs to two triangles
+      const int node[3] = {ia, ib, ic};
+      double *fn[3] = {fa, fb, fc};
+      for (int e = 0; e < 3; e++) {
+        const int i = node[e], j = node[(e + 1) % 3];
+        double dx[3], dv[3];
+        for (int d = 0; d < 3; d++) {
+          dx[d] = x[i][d] - x[j][d];
+          dv[d] = v[i][d] - v[j][d];
+        }
+        const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+        const double rdotv = dx[0] * dv[0] + dx[1] * dv[1] + dx[2] * dv[2];
+        const double fdamp = damping_fpair(0.5 * gamma[type], rdotv, rsq);
+        for (int d = 0; d < 3; d++) {
+          fn[e][d] += fdamp * dx[d];
+          fn[(e + 1) % 3][d] -= fdamp * dx[d];
+        }
+      }
+    }
+
+    if (newton_bond || ia < nlocal)
+      for (int d = 0; d < 3; d++) f[ia][d] += fa[d];
+    if (newton_bond || ib < nlocal)
+      for (int d = 0; d < 3; d++) f[ib][d] += fb[d];
+    if (newton_bond || ic < nlocal)
+      for (int d = 0; d < 3; d++) f[ic][d] += fc[d];
+    if (evflag)
+      ev_tally(ia, ib, ic, nlocal, newton_bond, eangle, fa, fc, a[0], a[1], a[2], c[0], c[1], c[2]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AngleCellMembrane::degenerate(int ia, int ib, int ic, double J2)
+{
+  error->one(FLERR,
+             "Angle style cell/membrane: triangle {}-{}-{} has shrunk to {:.3g} of its rest area "
+             "(the element cannot go below {:.0e}); the wall has been crushed or tangled in one "
+             "step -- most likely the time step is too large for the wall stiffness, or a node "
+             "was placed on top of another",
+             atom->tag[ia], atom->tag[ib], atom->tag[ic], std::sqrt(std::max(J2, 0.0)),
+             MIN_AREA_RATIO);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AngleCellMembrane::allocate()
+{
+  allocated = 1;
+  const int n = atom->nangletypes;
+  memory->create(G, n + 1, "angle:G");
+  memory->create(t0, n + 1, "angle:t0");
+  memory->create(gamma, n + 1, "angle:gamma");
+  memory->create(setflag, n + 1, "angle:setflag");
+  for (int i = 1; i <= n; i++) setflag[i] = 0;
+}
+
+/* ----------------------------------------------------------------------
+   angle_coeff N G t0 [gamma]
+------------------------------------------------------------------------- */
+
+void AngleCellMembrane::coeff(int narg, char **arg)
+{
+  if (narg < 3 || narg > 4)
+    error->all(FLERR,
+               "Angle_coeff cell/membrane: expected 'angle_coeff N G t0 [gamma]' (shear modulus, "
+               "wall thickness, edge damping), got {} arguments",
+               narg);
+  if (!allocated) allocate();
+
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
+  const double G_one = utils::numeric(FLERR, arg[1], false, lmp);
+  const double t0_one = utils::numeric(FLERR, arg[2], false, lmp);
+  const double gamma_one = narg > 3 ? utils::numeric(FLERR, arg[3], false, lmp) : 0.0;
+  if (!(G_one > 0.0) || !std::isfinite(G_one))
+    error->all(FLERR, "Angle_coeff cell/membrane: shear modulus G must be > 0, got {}", arg[1]);
+  if (!(t0_one > 0.0) || !std::isfinite(t0_one))
+    error->all(FLERR, "Angle_coeff cell/membrane: wall thickness t0 must be > 0, got {}", arg[2]);
+  if (!(gamma_one >= 0.0) || !std::isfinite(gamma_one))
+    error->all(FLERR, "Angle_coeff cell/membrane: damping gamma must be >= 0, got {}", arg[3]);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    G[i] = G_one;
+    t0[i] = t0_one;
+    gamma[i] = gamma_one;
+    setflag[i] = 1;
+    count++;
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for angle coefficients");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AngleCellMembrane::init_style()
+{
+  CellMech::require_unit_consistency(lmp, "Angle style cell/membrane");
+  int flag, cols;
+  iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
+  if (iref < 0 || flag != 1 || cols != 3)
+    error->all(FLERR,
+               "Angle style cell/membrane requires the wall reference positions as a per-atom "
+               "array: 'fix cell all property/atom rmass d_rho d_drho d2_{} 3 ghost yes' before "
+               "read_data, filled from the data file (read_data ... fix ID NULL cell)",
+               CellMech::REF_FIELD);
+  bool damped = false;
+  for (int i = 1; i <= atom->nangletypes; i++)
+    if (setflag[i] && gamma[i] > 0.0) damped = true;
+  if (damped && !comm->ghost_velocity)
+    error->all(FLERR,
+               "Angle style cell/membrane with damping gamma > 0 requires 'comm_modify vel yes' "
+               "(ghost velocities)");
+}
+
+/* ---------------------------------------------------------------------- */
+
+double AngleCellMembrane::equilibrium_angle(int /*i*/)
+{
+  // each triangle has its own rest shape; the equilateral angle is the nominal one
+  return MathConst::MY_PI / 3.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AngleCellMembrane::write_restart(FILE *fp)
+{
+  fwrite(&G[1], sizeof(double), atom->nangletypes, fp);
+  fwrite(&t0[1], sizeof(double), atom->nangletypes, fp);
+  fwrite(&gamma[1], sizeof(double), atom->nangletypes, fp);
+}
+
+void AngleCellMembrane::read_restart(FILE *fp)
+{
+  allocate();
+  const int n = atom->nangletypes;
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &G[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &t0[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
+  }
+  MPI_Bcast(&G[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&t0[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
+  for (int i = 1; i <= n; i++) setflag[i] = 1;
+}
+
+void AngleCellMembrane::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nangletypes; i++)
+    fprintf(fp, "%d %.15g %.15g %.15g\n", i, G[i], t0[i], gamma[i]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double AngleCellMembrane::single(int type, int i1, int i2, int i3)
+{
+  double **x = atom->x;
+  double **ref = atom->darray[iref];
+  double A[3], C[3], a[3], c[3];
+  for (int d = 0; d < 3; d++) {
+    A[d] = ref[i1][d] - ref[i2][d];
+    C[d] = ref[i3][d] - ref[i2][d];
+    a[d] = x[i1][d] - x[i2][d];
+    c[d] = x[i3][d] - x[i2][d];
+  }
+  MembraneRest rest;
+  if (!membrane_rest(A, C, rest)) return 0.0;
+  MembraneStrain s;
+  membrane_strain(rest, a, c, s);
+  if (!(s.J2 > 0.0)) return 0.0;
+  return membrane_energy(G[type], t0[type], rest, s);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void *AngleCellMembrane::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "G") == 0) return (void *) G;
+  if (strcmp(str, "t0") == 0) return (void *) t0;
+  if (strcmp(str, "gamma") == 0) return (void *) gamma;
+  return nullptr;
+}
