@@ -1,21 +1,29 @@
 """Helpers for the script tests: run lmp with the cellmech plugin, read its outputs.
 
-Environment (set by CTest, see tests/CMakeLists.txt): LMP, CELLMECH_PLUGIN, CELLMECH_ROOT, MPIEXEC.
+Environment (set by CTest, see tests/CMakeLists.txt): LMP, CELLMECH_PLUGIN, CELLMECH_ROOT, MPIEXEC,
+and PYTHONPATH=tools for the package cellmech (run by hand: PYTHONPATH=tools python3 tests/test_X.py).
 """
 import os
 import re
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
+
+from cellmech import params
+from cellmech.launch import mpi_command, mpiexec
 
 ROOT = os.environ.get("CELLMECH_ROOT", os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 LMP = os.environ.get("LMP", "lmp")
 PLUGIN = os.environ.get("CELLMECH_PLUGIN", os.path.join(ROOT, "build", "cellmechplugin.so"))
-MPIEXEC = os.environ.get("MPIEXEC") or "mpirun"
+MPIEXEC = mpiexec()
 INPUTS = os.path.join(ROOT, "lammps-inputs")
 CELLGEN = os.path.join(ROOT, "tools", "cellgen.py")
+
+# the coarse cell's model lengths (level 3 of the level table, cellmech/params.py), as -var settings
+COARSE = {k: params.LEVELS[3][k] for k in ("s", "r0", "f0", "reach")}
+# Table I (lammps-inputs/cell-model.lmp) and the cell around it, for the tests' references
+TABLE, CELL, STIFF, SOFT = params.table(), params.CELL, params.stiff(), params.SOFT
 
 failures = []
 
@@ -41,8 +49,7 @@ def lmp(input_file, cwd, nprocs=1, variables=None, check=True, log="log.lammps")
     cmd = [LMP, "-in", input_file, "-log", log, "-screen", "none"]
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
-    if nprocs > 1:
-        cmd = [MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
+    cmd = mpi_command(cmd, nprocs, MPIEXEC)
     env = dict(os.environ, LAMMPS_PLUGIN_PATH=os.path.dirname(PLUGIN))
     p = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True)
     text = open(os.path.join(cwd, log)).read() if os.path.exists(os.path.join(cwd, log)) else ""

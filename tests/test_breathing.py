@@ -9,19 +9,16 @@ Neo-Hookean nonlinearity (a shift of order (lam-1)) stays well below the 1% tole
 the stiff cell's turgor stretch, is run as well and reported.
 """
 import math
-import os
-import sys
 
 import lmptest as T
 
-sys.path.insert(0, os.path.join(T.ROOT, "tools", "validation"))
-from analysis import crossing_period as period  # noqa: E402  (shared with tools/validate.sh)
-from references import mesh_factor, omega_a5    # noqa: E402
+from cellmech.validation.analysis import crossing_period as period  # shared with tools/validate.sh
+from cellmech.validation.references import mesh_factor, omega_a5
 
-R, M, LEVEL = 30.0, 1.3e4, 4
+R, M, LEVEL = T.CELL["R"], T.CELL["M_wall"], 4
 CASES = {  # name: G (kPa), t0 (um), dt (us), steps
-    "stiff": (8.0e5, 0.126, 0.001, 600),
-    "soft": (20.0e3 / 3.0, 0.005, 0.02, 1500),
+    "stiff": (T.STIFF["G"], T.STIFF["t0"], 0.001, 600),
+    "soft": (T.SOFT["G"], T.SOFT["t0"], 0.02, 1500),
 }
 
 

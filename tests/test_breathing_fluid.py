@@ -14,15 +14,15 @@ layer the analytic fluid sphere does not have, softens the first internal acoust
 """
 import os
 import subprocess
-import sys
 
 import lmptest as T
 
-sys.path.insert(0, os.path.join(T.ROOT, "tools", "validation"))
-import references  # noqa: E402  (Eq. A4, shared with tools/validate.sh)
-from analysis import strongest_modes  # noqa: E402
+from cellmech.validation import references  # Eq. A4, shared with tools/validate.sh
+from cellmech.validation.analysis import strongest_modes
 
-R0, M, T0, E, RHO, C = 30.0, 1.3e4, 0.126, 2.4e6, 1.0, 264.6
+# the stiff cell of Table I (E = 3 G)
+R0, M, T0, E = T.CELL["R"], T.CELL["M_wall"], T.STIFF["t0"], 3.0 * T.STIFF["G"]
+RHO, C = T.TABLE["rho0"], T.TABLE["c"]
 
 
 def a4_roots(Et, R, n=3):

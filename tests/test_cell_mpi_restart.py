@@ -8,7 +8,7 @@ import numpy as np
 
 import lmptest as T
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+COARSE = dict(T.COARSE)
 START = """
 include         {inputs}/in.inflate
 velocity        all create 1.0e7 77 dist gaussian mom yes rot yes

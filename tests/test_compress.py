@@ -15,7 +15,7 @@ import numpy as np
 
 import lmptest as T
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+COARSE = dict(T.COARSE)
 WINDOWS = (0.06, 0.10, 0.14, 0.18)
 
 

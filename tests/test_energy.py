@@ -9,15 +9,12 @@ energy in the fastest modes, omega ~ c/s = 41 rad/us here, dt = 1 ns: 1.7e-3. As
 largest deviation from the initial total stays below 1e-3 of the largest kinetic energy, and the
 secular drift (slope of a linear fit times the run time) below 2e-4 of it.
 """
-import os
-import sys
 
 import lmptest as T
 
-sys.path.insert(0, os.path.join(T.ROOT, "tools", "validation"))
-from analysis import energy_balance  # noqa: E402  (shared with tools/validate.sh, case 7)
+from cellmech.validation.analysis import energy_balance  # shared with tools/validate.sh, case 7
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+COARSE = dict(T.COARSE)
 EXTRA = """
 variable        etot equal ke+pe
 variable        kin equal ke

@@ -17,7 +17,7 @@ DATA = {
     # two glued coarse cells stacked along z: the smallest tissue; cellgen writes pair.json beside
     "pair.data": ("tissue", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3, "--nfluid", 440),
 }
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+COARSE = dict(T.COARSE)
 # in run order: in.compress and in.breathing-fluid continue from the restart in.inflate writes
 SHORT = {
     "in.breathing": ("wall3.data", dict(nsteps=200)),

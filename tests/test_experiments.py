@@ -24,17 +24,14 @@ Asserted:
    at 1 mPa s the wall fails at a lower strain than under quasistatic load, on the side of the
    impacting plate (first broken nodes above the equator; the paper: near the plate).
 """
-import os
-import sys
 
 import numpy as np
 
 import lmptest as T
 
-sys.path.insert(0, os.path.join(T.ROOT, "tools", "experiments"))
-import analyse as A  # noqa: E402
+from cellmech.experiments import analyse as A
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+COARSE = dict(T.COARSE)
 
 
 def run(inp, d, log, **v):

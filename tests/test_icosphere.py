@@ -8,15 +8,13 @@ The data file: one molecule ID per cell, wall/fluid types, masses from rho0 and 
 fluid strictly inside the wall, reference positions equal to the positions.
 """
 import math
-import sys
 from collections import Counter
 
 import numpy as np
 
 import lmptest as T
 
-sys.path.insert(0, T.ROOT + "/tools")
-import cellgen  # noqa: E402
+from cellmech import cellgen
 
 
 def main():

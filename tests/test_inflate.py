@@ -26,8 +26,8 @@ import numpy as np
 
 import lmptest as T
 
-G, T0 = 8.0e5, 0.126
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+G, T0 = T.STIFF["G"], T.STIFF["t0"]
+COARSE = dict(T.COARSE)
 
 
 def inflate(d, name, Pi, steps, G=G, t0=T0, Lp=100.0, dt=0.001, respa=False):

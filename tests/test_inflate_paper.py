@@ -11,17 +11,14 @@ Asserted, with the issue's and the paper's criteria:
    integrated osmotic flux (round-off, 1e-9).
 """
 import math
-import os
-import sys
 
 import numpy as np
 
 import lmptest as T
 
-sys.path.insert(0, os.path.join(T.ROOT, "tools", "validation"))
-from references import young_laplace_stretch_at  # noqa: E402  (shared with tools/validate.sh)
+from cellmech.validation.references import young_laplace_stretch_at  # shared with tools/validate.sh
 
-G, T0, R0 = 8.0e5, 0.126, 30.0
+G, T0, R0 = T.STIFF["G"], T.STIFF["t0"], T.CELL["R"]
 
 
 def main():

@@ -6,7 +6,7 @@ just inside it between the nodes, and in the second cell's wall region but belon
 """
 import lmptest as T
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+COARSE = dict(T.COARSE)
 EXTRA = """
 # cell 1 at the origin, cell 2 at x = 80. Outside cell 1: beyond a face and beyond a node;
 # inside cell 1 close to its wall; and a cell-1 particle sitting inside cell 2 (outside its own wall)

@@ -19,19 +19,15 @@ where the classical solution would compress it (docs/membrane.rst). Stiff cell: 
 Tolerances: the solver's (1e-7 residual) times the quantities' condition, stated at each check.
 """
 import math
-import os
 import sys
 import time
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "tools"))
-sys.path.insert(0, HERE)
-import lmptest as T  # noqa: E402  (check/finish helpers only: no LAMMPS run here)
-import membrane as M  # noqa: E402
+import lmptest as T  # check/finish helpers only: no LAMMPS run here
+from cellmech import membrane as M
 
-G_T0, R0 = 8.0e5 * 0.126, 30.0
+G_T0, R0 = T.STIFF["G"] * T.STIFF["t0"], T.CELL["R"]
 K_FLUID = 7.0e4          # rho0 c^2 of the model's fluid (kPa)
 VW_H = 1e-3              # strain step of the virtual-work differences (c)
 

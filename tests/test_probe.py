@@ -20,7 +20,7 @@ import subprocess
 
 import lmptest as T
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dir=T.INPUTS, data="cell.data")
+COARSE = dict(T.COARSE, dir=T.INPUTS, data="cell.data")
 CELL = """
 units           {units}
 atom_style      molecular

@@ -2,7 +2,7 @@
 where it is known exactly: tau_xy(y) = mu du/dy = rho0 G (L/2 - y), linear across the channel,
 zero on the centre line, rho0 G L/2 at the walls, whatever the viscosity.
 
-The channel of tests/test_poiseuille.py (its input builder; mirror walls, which put the no-slip
+The channel of tests/test_poiseuille.py (tests/channel.py; mirror walls, which put the no-slip
 planes half a spacing out): 20 fluid layers, dx = 1 um, s = 1.2 um, mu = 1000 mPa s, G = 2 um/us^2, 0.6 us to steady state;
 tau_xy averaged per layer over the last 0.2 us.
 Tolerance 1% (relative L2 over the layers): the SPH gradient of Eq. 25 on this lattice carries the
@@ -15,7 +15,7 @@ Also asserted: tau_xz and tau_yz vanish (below 2% of the wall stress) and |tau| 
 import numpy as np
 
 import lmptest as T
-from test_poiseuille import DX, G, L, NSTEPS, RHO0, channel_input
+from channel import DX, G, L, NSTEPS, RHO0, channel_input
 
 SHEAR = f"""
 compute         shear fluid cell/shear/atom

@@ -18,17 +18,14 @@ Asserted:
    against A2 within 20% from lam = 1.15 on. The full table shows where the network departs.
 """
 import math
-import os
-import sys
 
 import numpy as np
 
 import lmptest as T
 
-sys.path.insert(0, os.path.join(T.ROOT, "tools", "validation"))
-import references as ref  # noqa: E402  (Eqs. A1, A2, shared with tools/validate.sh)
+from cellmech.validation import references as ref  # Eqs. A1, A2, shared with tools/validate.sh
 
-G, T0, A, N = 8.0e5, 0.126, 2.5, 20
+G, T0, A, N = T.STIFF["G"], T.STIFF["t0"], 2.5, 20
 
 
 def main():

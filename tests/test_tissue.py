@@ -24,7 +24,7 @@ import numpy as np
 
 import lmptest as T
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+COARSE = dict(T.COARSE)
 INFLATE, SETTLE = 1500, 500   # in.tissue-inflate's steps: inflation, then the settle
 CONT = """
 variable        restart index three.restart

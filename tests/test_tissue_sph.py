@@ -78,7 +78,7 @@ def pair_check():
             np.array_equal(apart[:, 4:7], np.array([[2.0, 0, 0], [-2.0, 0.5, 0]])))
 
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0)
+COARSE = dict(T.COARSE)
 NSTEPS = 6000
 # one fix cell/fluid per cell: tissue-model.lmp's single osmosis fix is replaced by two, each on
 # the fluid of one cell with its own osmotic potential; leaks yes: fluid outside its own wall

@@ -1,4 +1,4 @@
-"""Issue 5: the validation suite (tools/validate.sh, tools/validation/) at RES=coarse, as CI runs
+"""Issue 5: the validation suite (tools/validate.sh, tools/cellmech/validation/) at RES=coarse, as CI runs
 it: 642 wall nodes, ~460 fluid particles (level 3), a few minutes on one core. The report and the
 JSON summary are written to work-validation/; each case is checked against a tolerance that the
 coarse resolution justifies (below, next to each check), and the summary must hold every case with
@@ -19,7 +19,7 @@ import sys
 
 import lmptest as T
 
-R0, RC0 = 30.0, 3.2
+R0, RC0 = T.CELL["R"], T.COARSE["r0"]
 LAYER = 2 * RC0 / R0
 
 
@@ -31,8 +31,8 @@ def main():
     d = T.workdir("validation")
     env = dict(os.environ, RES="coarse", OUT=d, WORK=os.path.join(d, "work"),
                LAMMPS_PLUGIN_PATH=os.path.dirname(T.PLUGIN))
-    p = subprocess.run([sys.executable, os.path.join(T.ROOT, "tools", "validation", "driver.py")],
-                       env=env, capture_output=True, text=True)
+    p = subprocess.run([sys.executable, "-m", "cellmech.validation.driver"], env=env, capture_output=True,
+                       text=True)
     print(p.stdout[-6000:], p.stderr[-3000:])
     T.check("validate.sh driver ran", p.returncode == 0, f"rc {p.returncode}")
     summary = json.load(open(os.path.join(d, "validation-summary.json")))

@@ -36,7 +36,10 @@ if [ -z "${LMP:-}" ]; then
   [ -f "$here/build/cellmech-env.sh" ] || { echo "benchmark-tissue: run tools/setup.sh first" >&2; exit 1; }
   source "$here/build/cellmech-env.sh"
 fi
+source "$here/tools/common.sh"
 py=/usr/bin/python3
+# the coarse level-3 cell's fluid count and lengths: the level table (tools/cellmech/params.py)
+read -r NF3 S3 R03 F03 REACH3 < <(level_params 3 nfluid s r0 f0 reach)
 work=$(mktemp -d /tmp/cellmech-bench-tissue.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -56,19 +59,17 @@ out=$work/report.md
 cat "$out"
 declare -A base
 for n in $SIZES; do
-  $py "$here/tools/cellgen.py" tissue -o t$n.data --lattice sc --n $n $n $n --level 3 --nfluid 440 \
+  $py "$here/tools/cellgen.py" tissue -o t$n.data --lattice sc --n $n $n $n --level 3 --nfluid $NF3 \
     --stats t$n.json > /dev/null
   read -r reach special nbc < <($py -c "import json; s = json.load(open('t$n.json'))
-print(max(4.0, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'], s['neighbours_mean'] if s['cells'] > 1 else 0)")
+print(max($REACH3, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'], s['neighbours_mean'] if s['cells'] > 1 else 0)")
   cat > in.bench <<EOF
 include $here/lammps-inputs/in.tissue-inflate
 run $NSTEPS
 EOF
   for np in $RANKS; do
-    cmd=("$LMP")
-    [ "$np" -gt 1 ] && cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" "$LMP")
-    "${cmd[@]}" -in in.bench -log log.$n.$np -screen none -var dir "$here/lammps-inputs" \
-      -var data t$n.data -var special "$special" -var s 6.4 -var r0 3.2 -var f0 8.0e4 \
+    mpi_run "$np" "$LMP" -in in.bench -log log.$n.$np -screen none -var dir "$here/lammps-inputs" \
+      -var data t$n.data -var special "$special" -var s $S3 -var r0 $R03 -var f0 $F03 \
       -var reach "$reach" -var nsteps "$WARM" -var nsettle "$SETTLE" -var every "$WARM" -var restart_out none.restart \
       -var out none.dat -var cells none-cells.dat
     row=$($py - "log.$n.$np" "$((n * n * n))" "$np" "${base[$np]:-0}" "$nbc" <<'PY'

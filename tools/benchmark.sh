@@ -14,7 +14,7 @@
 # fastest run is kept (the other runs only guard against a busy machine).
 #
 # Usage: tools/benchmark.sh [-np N] [-r REPEAT] [-n NSTEPS] [-k]
-#   -np N      MPI ranks (N > 1 runs mpirun --allow-run-as-root --oversubscribe -np N)
+#   -np N      MPI ranks (N > 1 runs it through mpi_run, tools/common.sh)
 #   -r REPEAT  runs per case (default 3)
 #   -n NSTEPS  steps per run (default 2000)
 #   -k         keep the work folder (data files and LAMMPS logs) and print its path
@@ -42,6 +42,7 @@ if [ -z "${LMP:-}" ]; then
   source "$here/build/cellmech-env.sh"
 fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+source "$here/tools/common.sh"
 inputs=$here/lammps-inputs
 bench=$here/tools/bench
 
@@ -52,7 +53,8 @@ else trap 'rm -rf "$work"' EXIT; fi
 cd "$work"
 
 # ---- the cell and its fluid ----------------------------------------------------------------------
-gen=$("$PYTHON" "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid 3500 --inset 1.6)
+read -r NF4 R04 < <(level_params 4 nfluid r0)
+gen=$("$PYTHON" "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid "$NF4" --inset "$R04")
 spacing=$(sed -n 's/.*spacing \([0-9.eE+-]*\),.*/\1/p' <<<"$gen" | head -n1)
 # the fluid (type 2) of cell.data, in its box, as data files for atom_style sph and molecular
 awk '
@@ -76,10 +78,7 @@ mfluid=$(cat fluid.mass)
 nfluid=$(cat fluid.count)
 
 # ---- runs --------------------------------------------------------------------------------------
-lmp() {
-  if [ "$NP" -gt 1 ]; then mpirun --allow-run-as-root --oversubscribe -np "$NP" "$LMP" "$@"
-  else "$LMP" "$@"; fi
-}
+lmp() { mpi_run "$NP" "$LMP" "$@"; }
 # field of the last "Loop time of T on P procs for S steps with N atoms" line: 4 T, 9 S, 12 N
 loopf() { awk -v k="$2" '/^Loop time of/ {v = $k} END {print v}' "$1"; }
 neighs() { awk '/^Ave neighs\/atom/ {v = $4} END {print v}' "$1"; }

@@ -3,7 +3,7 @@
 # quasistatic compression at two rates, turgor series, relaxation (stiff and soft, viscosities,
 # zeta = 1.1 wall), impact at 5 m/s (stiff and soft, 1-1000 mPa s), failure (lamf = 1.04,
 # quasistatic and impact). Writes the data of each run to $OUT, then the report experiments.md
-# with its plots (tools/experiments/report.py).
+# with its plots (tools/cellmech/experiments/report.py).
 #   RES=coarse bash tools/experiments.sh   # 642 + ~460 particles per cell, minutes (default)
 #   RES=paper  bash tools/experiments.sh   # 2562 + 3500, the paper's resolution; report in docs/
 # Environment: OUT (run folder, default results/experiments-$RES), NP (MPI ranks, default 1),
@@ -16,14 +16,15 @@ here=${CELLMECH_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 # on a fresh machine, set up first (LAMMPS and the plugin); later runs reuse the build
 [ -f "$here/build/cellmech-env.sh" ] || bash "$here/tools/setup.sh"
 source "$here/build/cellmech-env.sh"
+source "$here/tools/common.sh"
 # a copy of the plugin can be used instead of build/ (a long run while the plugin is being rebuilt)
 [ -n "${PLUGIN_DIR:-}" ] && export LAMMPS_PLUGIN_PATH=$PLUGIN_DIR
 RES=${RES:-coarse}
 NP=${NP:-1}
 INPUTS=${INPUTS:-$here/lammps-inputs}
 case "$RES" in
-  coarse) LEVEL=3; NFLUID=440; NINFL=25000 ;;
-  paper)  LEVEL=4; NFLUID=3500; NINFL=20000 ;;
+  coarse) LEVEL=3; NINFL=25000 ;;
+  paper)  LEVEL=4; NINFL=20000 ;;
   *) echo "RES must be coarse or paper, got '$RES'" >&2; exit 2 ;;
 esac
 out=${OUT:-$here/results/experiments-$RES}
@@ -31,17 +32,18 @@ if [ "$RES" = paper ]; then report=${REPORT:-$here/docs}; else report=${REPORT:-
 mkdir -p "$out"
 cd "$out"
 py=/usr/bin/python3
-# lengths of the discretisation scale with the wall spacing, f0 with its cube (tools/main-job.sh)
-scale=$(( 1 << (4 - LEVEL) ))
-read -r s r0 f0 reach < <($py -c "k=$scale; print(3.2*k, 1.6*k, 1.0e4*k**3, 2.0*k)")
+# the discretisation's lengths at this level: the level table (tools/cellmech/params.py)
+read -r NFLUID s r0 f0 reach nwall < <(level_params $LEVEL nfluid s r0 f0 reach nodes)
 model=(-var dir "$INPUTS" -var s "$s" -var r0 "$r0" -var f0 "$f0")
-# the soft wall deforms more between its nodes: a longer reach for the triangle barycentres
-soft=(-var G 6666.67 -var t0 0.005 -var reach "$($py -c "print(3*$reach)")")
+# the soft wall (cellmech.params.SOFT) deforms more between its nodes: a longer reach for the
+# triangle barycentres
+soft=($($py -c "from cellmech.params import SOFT; print('-var G %.6g -var t0 %g' % (SOFT['G'], SOFT['t0']))")
+  -var reach "$($py -c "print(3*$reach)")")
 # zeta = 1.1 wall damping (Eq. 22): gamma = zeta sqrt(2 k m), k = 6 G t0 / sqrt 3, m the wall node mass
-nwall=$(( 10 * 4 ** LEVEL + 2 ))
-gamma11=$($py -c "import math; k=6*8.0e5*0.126/math.sqrt(3); m=1.3e4/$nwall; print(1.1*math.sqrt(2*k*m))")
+gamma11=$($py -c "import math; from cellmech.params import CELL, stiff; p = stiff()
+print(1.1 * math.sqrt(2 * 6 * p['G'] * p['t0'] / math.sqrt(3) * CELL['M_wall'] / $nwall))")
 
-lmp() { if [ "$NP" -gt 1 ]; then mpirun --allow-run-as-root --oversubscribe -np "$NP" "$LMP" "$@"; else "$LMP" "$@"; fi; }
+lmp() { mpi_run "$NP" "$LMP" "$@"; }
 want() { [ -z "${ONLY:-}" ] || [[ " $ONLY " == *" $1 "* ]]; }
 # stage NAME CMD...: run once, record the wall time in times.txt; a failed stage is recorded and skipped
 stage() {
@@ -139,6 +141,6 @@ stage compress-soft L compress-soft "$INPUTS/in.compress" "${soft[@]}" -var rest
   -var dt 0.002 -var strain 0.2 -var every 500 -var out compress-soft.dat
 
 echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
-want report && $py "$here/tools/experiments/report.py" --run "$out" --res "$RES" --report "$report" \
+want report && $py -m cellmech.experiments.report --run "$out" --res "$RES" --report "$report" \
   ${FALLBACK:+--fallback "$FALLBACK"}
 echo "experiments done: $out"

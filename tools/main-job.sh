@@ -16,23 +16,17 @@ case "$LEVEL" in 3|4|5) ;; *) bad "LEVEL must be 3, 4 or 5 (642, 2562 or 10242 w
 [[ "$NP" =~ ^[1-9][0-9]*$ ]] || bad "NP (MPI ranks) must be a whole number >= 1, got '$NP'"
 [ -z "${NFLUID:-}" ] || [[ "$NFLUID" =~ ^[1-9][0-9]*$ ]] ||
   bad "NFLUID (fluid particles in the cell) must be a whole number >= 1, got '$NFLUID'"
+source "$here/tools/common.sh"
+# the model's lengths and time step at this level: the level table (tools/cellmech/params.py)
+read -r nf s r0 f0 reach dt < <(level_params "$LEVEL" nfluid s r0 f0 reach dt)
 bash "$here/tools/setup.sh"
 source "$here/build/cellmech-env.sh"
 mkdir -p "$out"
 cd "$out"
-# Model lengths per level, as tools/validation/common.py: a level coarser doubles the wall
-# spacing, r0 and reach, f0 (force x length) grows 2^3; the smoothing length follows the fluid
-# spacing of the level's fluid count; the 10242-node wall's lighter nodes need dt = 0.5 ns.
-case "$LEVEL" in
-  3) nf=440;   s=6.4;  r0=3.2; f0=8.0e4;  reach=4.0; dt=0.001 ;;
-  4) nf=3500;  s=3.2;  r0=1.6; f0=1.0e4;  reach=2.0; dt=0.001 ;;
-  5) nf=14000; s=2.07; r0=0.8; f0=1.25e3; reach=1.0; dt=0.0005 ;;
-  *) echo "main-job: LEVEL must be 3, 4 or 5 (642, 2562 or 10242 wall nodes), got '$LEVEL'" >&2; exit 2 ;;
-esac
 NFLUID=${NFLUID:-$nf}
 ninfl=$(/usr/bin/python3 -c "print(round(25.0/$dt))")
 model=(-var dir "$here/lammps-inputs" -var s "$s" -var r0 "$r0" -var f0 "$f0" -var reach "$reach" -var dt "$dt")
-run() { if [ "$NP" -gt 1 ]; then mpirun --allow-run-as-root --oversubscribe -np "$NP" "$LMP" "$@"; else "$LMP" "$@"; fi; }
+run() { mpi_run "$NP" "$LMP" "$@"; }
 /usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level "$LEVEL" --nfluid "$NFLUID" --inset "$r0"
 echo "inflating ..."
 run -in "$here/lammps-inputs/in.inflate" -log log.inflate -screen none "${model[@]}" \
@@ -47,11 +41,12 @@ run -in "$here/lammps-inputs/in.compress" -log log.compress -screen none "${mode
 # stress-strain with the wall ruptures and lamella debonds marked (tissue-stress-strain.csv/png).
 # The coarse cell's lengths whatever LEVEL is; reach and special-list room from the generator.
 echo "tissue: generating, inflating, compressing to failure ..."
+read -r tnf ts tr0 tf0 treach < <(level_params 3 nfluid s r0 f0 reach)
 /usr/bin/python3 "$here/tools/cellgen.py" tissue -o tissue.data --lattice sc --n 2 2 2 --level 3 \
-  --nfluid 440 --stats tissue.json > tissue-gen.txt
+  --nfluid "$tnf" --stats tissue.json > tissue-gen.txt
 read -r treach tspecial < <(/usr/bin/python3 -c "import json; s = json.load(open('tissue.json'))
-print(max(4.0, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])")
-tmodel=(-var dir "$here/lammps-inputs" -var s 6.4 -var r0 3.2 -var f0 8.0e4 -var reach "$treach")
+print(max($treach, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])")
+tmodel=(-var dir "$here/lammps-inputs" -var s "$ts" -var r0 "$tr0" -var f0 "$tf0" -var reach "$treach")
 run -in "$here/lammps-inputs/in.tissue-inflate" -log log.tissue-inflate -screen none "${tmodel[@]}" \
   -var data tissue.data -var special "$tspecial" -var nsteps 6000 -var every 500 \
   -var restart_out tissue.restart

@@ -6,7 +6,6 @@ loses a tether) and cells coming apart (a lamella bond lets go).
   plot_tissue.py DIR [PREFIX]      reads DIR/PREFIX.dat (default tissue-compress), writes
                                    DIR/tissue-stress-strain.csv and .png
 """
-import os
 import sys
 
 import matplotlib
@@ -16,8 +15,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 # the columns of in.tissue-compress's file and the smoothing are the tissue report's
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "tissue"))
-from tissuedata import COMPRESS as COLS, smooth  # noqa: E402
+from cellmech.tissue.tissuedata import COMPRESS as COLS, smooth  # noqa: E402
 
 
 def load(path):

@@ -15,7 +15,9 @@
 #   LAMMPS_SRC      an existing LAMMPS source tree (the directory that holds src/ and cmake/)
 #   LAMMPS_BUILD    an existing LAMMPS CMake build dir (with lmp and liblammps.so) of that tree
 #   CELLMECH_CACHE  cache root (default ~/.cache/cellmech)
-#   SKIP_APT=1      do not install Debian packages
+#   SKIP_APT=1      leave apt entirely alone: no package installs, no deb-src list, no apt-get
+#                   update or source (the packages must be there; the LAMMPS source must be cached
+#                   already or given as LAMMPS_SRC)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 LAMMPS_VERSION=${LAMMPS_VERSION:-20260704}
@@ -32,7 +34,7 @@ JOBS=${JOBS:-$(nproc)}
 log() { printf '[setup] %s\n' "$*"; }
 
 # ---- 1. packages -------------------------------------------------------------------------------
-pkgs=(build-essential cmake pkg-config git openmpi-bin libopenmpi-dev libeigen3-dev libfftw3-dev
+pkgs=(build-essential cmake pkg-config git openmpi-bin libopenmpi-dev libfftw3-dev
   libgtest-dev libgmock-dev libyaml-dev libpng-dev zlib1g-dev python3-numpy python3-scipy python3-matplotlib python3-vtk9 dpkg-dev
   python3-pytest)
 if [ "${SKIP_APT:-0}" != 1 ]; then
@@ -50,6 +52,11 @@ fi
 if [ -z "${LAMMPS_SRC:-}" ]; then
   LAMMPS_SRC=$CACHE/src/lammps-$LAMMPS_VERSION
   if [ ! -f "$LAMMPS_SRC/src/lammps.h" ]; then
+    if [ "${SKIP_APT:-0}" = 1 ]; then
+      echo "setup: SKIP_APT=1 leaves apt alone, and no LAMMPS source is cached in $LAMMPS_SRC:" \
+        "give LAMMPS_SRC=/path/to/lammps, or run once without SKIP_APT to download it" >&2
+      exit 2
+    fi
     mkdir -p "$CACHE/src"
     list=/etc/apt/sources.list.d/cellmech-$DEB_SUITE-src.sources
     if [ ! -f $list ]; then

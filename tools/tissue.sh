@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tissue experiments in one command, with a report (tools/tissue/report.py):
+# Tissue experiments in one command, with a report (tools/cellmech/tissue/report.py):
 #   1. pair: two glued cells stacked along z pressed to 10% and pulled apart (in.tissue-pair), and a
 #      single cell of the same size pressed alone: force vs strain, contact and glued area,
 #      pull-off force, work of separation against Gc x glued area;
@@ -22,6 +22,7 @@ set -euo pipefail
 here=${CELLMECH_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 [ -f "$here/build/cellmech-env.sh" ] || bash "$here/tools/setup.sh"
 source "$here/build/cellmech-env.sh"
+source "$here/tools/common.sh"
 RES=${RES:-coarse}
 NP=${NP:-1}
 JOBS=${JOBS:-2}
@@ -44,7 +45,7 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 cd "$out"
 
-lmp() { if [ "$NP" -gt 1 ]; then mpirun --allow-run-as-root --oversubscribe -np "$NP" "$LMP" "$@"; else "$LMP" "$@"; fi; }
+lmp() { mpi_run "$NP" "$LMP" "$@"; }
 want() { [ -z "${ONLY:-}" ] || [[ " $ONLY " == *" $1 "* ]]; }
 # stage NAME CMD...: run once in $out/NAME, record the wall time in times.txt; a failed stage is
 # recorded and skipped
@@ -65,22 +66,24 @@ stage() {
 # bg NAME CMD...: stage in the background, at most JOBS at a time (the runs are independent)
 bg() { while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done; stage "$@" & }
 
+# the coarse level-3 cell's fluid count and lengths: the level table (tools/cellmech/params.py)
+read -r NF3 S3 R03 F03 REACH3 < <(level_params 3 nfluid s r0 f0 reach)
 # ---- the cells: generator, with its recommended reach and the room for special neighbours
 gen() {
-  $py "$here/tools/cellgen.py" tissue -o "$1.data" --lattice sc --n $2 --level 3 --nfluid 440 \
+  $py "$here/tools/cellgen.py" tissue -o "$1.data" --lattice sc --n $2 --level 3 --nfluid $NF3 \
     --stats "$1.json" > "$1.txt"
 }
 gen_all() { gen block "$NB" && gen pair "1 1 2" && gen single "1 1 1"; }
 stage gen gen_all
 params() {  # reach special of a generated tissue
   $py -c "import json; s = json.load(open('$out/gen/$1.json'))
-print(max(4.0, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])"
+print(max($REACH3, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])"
 }
 read -r reach_b special_b < <(params block)
 read -r reach_p special_p < <(params pair)
 read -r reach_s special_s < <(params single)
-# the coarse level-3 cell's lengths (tools/main-job.sh): s, r0, f0; reach from the generator
-model() { echo -var dir "$INPUTS" -var s 6.4 -var r0 3.2 -var f0 8.0e4 -var reach "$1"; }
+# the coarse level-3 cell's lengths s, r0, f0; reach from the generator
+model() { echo -var dir "$INPUTS" -var s $S3 -var r0 $R03 -var f0 $F03 -var reach "$1"; }
 # frames: dump image / VTK interval for ~4 frames of a compression to strain EPS at V m/s, from the
 # block's generated height (the inflated block is a few % taller)
 frames() {
@@ -132,5 +135,5 @@ bg single pairrun 1 "$reach_s" single
 wait
 
 echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
-want report && $py "$here/tools/tissue/report.py" --run "$out" --res "$RES" --report "$report" --figs "$figs"
+want report && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" --figs "$figs"
 echo "tissue done: $out (report $report/tissue.md)"

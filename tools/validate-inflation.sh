@@ -5,9 +5,11 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$here/build/cellmech-env.sh"
+source "$here/tools/common.sh"
+read -r NF4 R04 < <(level_params 4 nfluid r0)
 out=${OUT:-$here/results/inflation-paper}
 mkdir -p "$out" && cd "$out"
-/usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid 3500 --inset 1.6
+/usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid $NF4 --inset $R04
 for P in ${PRESSURES:-100 200 364 400}; do
   start=$(date +%s)
   "$LMP" -in "$here/lammps-inputs/in.inflate" -log "log.$P" -screen none -var dir "$here/lammps-inputs" \
@@ -18,7 +20,8 @@ done
 /usr/bin/python3 - "$out" <<'PY'
 import math, sys
 import numpy as np
-G, t0, R0 = 8.0e5, 0.126, 30.0
+from cellmech.params import CELL, stiff
+G, t0, R0 = stiff()["G"], stiff()["t0"], CELL["R"]
 print(f"{'P target':>8} {'P':>8} {'lam':>8} {'lam YL':>8} {'F_eq':>10} {'P pi R^2':>10} {'ratio':>6} leaks  mass-flux")
 for f in sorted(__import__('glob').glob(sys.argv[1] + '/inflate-*.dat'), key=lambda s: int(s.split('-')[-1][:-4])):
     a = np.loadtxt(f, ndmin=2)

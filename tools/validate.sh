@@ -14,4 +14,5 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$here/build/cellmech-env.sh"
 export CELLMECH_SPECTRUM=${CELLMECH_SPECTRUM:-$here/build/cellmech-spectrum}
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-exec /usr/bin/python3 "$here/tools/validation/driver.py" "$@"
+source "$here/tools/common.sh"
+exec /usr/bin/python3 -m cellmech.validation.driver "$@"

@@ -11,46 +11,26 @@ import subprocess
 import sys
 import time
 
-ROOT = os.environ.get("CELLMECH_ROOT",
-                      os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+from .. import params
+from ..launch import mpi_command, mpiexec
+from ..params import LEVELS, SOFT, model_vars, wall_nodes  # noqa: F401 (names the cases import)
+
+ROOT = os.environ.get("CELLMECH_ROOT", params.ROOT)
 # the driver points this to a copy of lammps-inputs taken when it starts: LAMMPS reads its input
 # as it goes, so a long validation run must not see the inputs edited under it
 INPUTS = os.environ.get("CELLMECH_INPUTS", os.path.join(ROOT, "lammps-inputs"))
 CELLGEN = os.path.join(ROOT, "tools", "cellgen.py")
 SPECTRUM = os.environ.get("CELLMECH_SPECTRUM", os.path.join(ROOT, "build", "cellmech-spectrum"))
 
-# Model lengths per level (tools/main-job.sh): a level coarser doubles the wall spacing, the
-# contact distance r0 and the barycentre reach, and the contact strength f0 (force x length,
-# acting at r0) grows 2^3. Level 4 is the paper's (2562 + 3500). The smoothing length s belongs to
-# the fluid and follows the fluid spacing dx: the paper's fluid counts (440, 3500, 14000) refine
-# dx by 1.9 from level 3 to 4 (5.71 -> 3.01 um) but only by 1.55 from 4 to 5 (-> 1.95 um), so
-# level 5 keeps level 4's s/dx = 1.063 with s = 2.07 um (halving s to 1.6 would leave s/dx = 0.82,
-# fewer kernel neighbours than at the other levels). Level 5 has a wall node a quarter as heavy:
-# its fastest tether mode (about 4 ns period) needs dt = 0.5 ns.
-LEVELS = {
-    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001),
-    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001),
-    5: dict(nfluid=14000, s=2.07, r0=0.8, f0=1.25e3, reach=1.0, dt=0.0005),
-}
 # osmotic inflation time (us): level 5 reaches its turgor by 3 us (measured: 363.8 kPa at 2 us);
 # 10 us leave 7 us (several relaxation times) for the inflation's oscillation to die out, at half
 # the cost of the 20 us that levels 3 and 4 can afford
 T_INFLATE = {3: 20.0, 4: 20.0, 5: 10.0}
-RES_LEVEL = {"coarse": 3, "paper": 4, "study": 4, "fine": 5}
 
-# the stiff cell of Table I (docs/model.md section 3.1), units micro
-R0, M_WALL, RHO0, C_PHYS = 30.0, 1.3e4, 1.0, 264.6
-STIFF = dict(G=8.0e5, t0=0.126, P=364.0)
-SOFT = dict(G=20.0e3 / 3.0, t0=0.005, P=0.1)
-
-
-def wall_nodes(level):
-    return 10 * 4 ** level + 2
-
-
-def model_vars(level):
-    p = LEVELS[level]
-    return dict(s=p["s"], r0=p["r0"], f0=p["f0"], reach=p["reach"], dt=p["dt"])
+# the stiff cell of Table I (docs/model.md section 3.1), units micro: from cell-model.lmp and params
+_T = params.table()
+R0, M_WALL, RHO0, C_PHYS = params.CELL["R"], params.CELL["M_wall"], _T["rho0"], _T["c"]
+STIFF = params.stiff()
 
 
 _CODE = []
@@ -87,7 +67,7 @@ class Runner:
         self.work = work
         self.nprocs = nprocs
         self.lmp_exe = os.environ.get("LMP", "lmp")
-        self.mpiexec = os.environ.get("MPIEXEC") or "mpirun"
+        self.mpiexec = mpiexec()
         self.say = log
         # LAMMPS wall time of the runs a case used, reused ones included, and the time spent
         # here in runs made now: the driver reports a case's cost as the first plus its own
@@ -147,8 +127,7 @@ class Runner:
         cmd = [self.lmp_exe, "-in", inp, "-log", log, "-screen", "none"]
         for k, v in variables.items():
             cmd += ["-var", k, str(v)]
-        if self.nprocs > 1:
-            cmd = [self.mpiexec, "--allow-run-as-root", "--oversubscribe", "-np", str(self.nprocs)] + cmd
+        cmd = mpi_command(cmd, self.nprocs, self.mpiexec)
         t = time.time()
         p = subprocess.run(cmd, cwd=self.work, capture_output=True, text=True)
         text = open(self.path(log)).read() if os.path.exists(self.path(log)) else ""

@@ -2,8 +2,6 @@
 um, pg, us, kPa, nN). Nothing here is a stored number: every reference follows from the model
 parameters the caller passes."""
 import math
-import os
-import sys
 
 import numpy as np
 from scipy.optimize import brentq
@@ -20,8 +18,7 @@ def mesh_factor(level):
     network's tether energy is sum(l0^2) G t0/sqrt3 u(lam) where the continuum shell has
     2 sqrt3 4 pi R^2 G t0/sqrt3 u(lam), so the ratio is sqrt(sum l0^2 / (2 sqrt3 4 pi R^2))
     (1.0049 at level 4)."""
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-    import cellgen
+    from .. import cellgen
     nodes, _, edges = cellgen.icosphere(level)
     l = np.linalg.norm(nodes[edges[:, 0]] - nodes[edges[:, 1]], axis=1)
     return math.sqrt((l ** 2).sum() / (2 * math.sqrt(3) * 4 * math.pi))

@@ -7,10 +7,10 @@ import re
 
 import numpy as np
 
-from common import (C_PHYS, INPUTS, LEVELS, M_WALL, R0, RHO0, SOFT, STIFF, T_INFLATE, model_vars,
+from .common import (C_PHYS, INPUTS, LEVELS, M_WALL, R0, RHO0, SOFT, STIFF, T_INFLATE, model_vars,
                     resolution)
-import analysis
-import references as ref
+from . import analysis
+from . import references as ref
 
 COMPRESS_STRAINS = (0.05, 0.10, 0.15, 0.20)
 BREATHING_SPEEDS = (50.0, 100.0, 250.0)
@@ -288,13 +288,10 @@ def case_sheet(run, level, ctx):
 # ---- case 5 ------------------------------------------------------------------------------------
 
 def membrane_reference(P, strains, rho, material="neohookean"):
-    """(forces in nN of the membrane model, tools/membrane.py, at the strains, or None; a message
+    """(forces in nN of the membrane model, cellmech.membrane, at the strains, or None; a message
     when there is none). The contents' bulk modulus is the Tait fluid's,
     rho dP/drho = rho0 c^2 (rho/rho0)^7."""
-    try:
-        import membrane
-    except ImportError:
-        return None, "tools/membrane.py (the membrane reference) is missing"
+    from .. import membrane
     K = RHO0 * C_PHYS ** 2 * (rho / RHO0) ** 7
     try:
         curve = membrane.compress_curve(STIFF["G"] * STIFF["t0"], R0, P, list(strains), bulk_modulus=K,

@@ -1,4 +1,4 @@
-"""Readers and analysis helpers for the tissue experiments (tools/tissue.sh, tools/tissue/report.py).
+"""Readers and analysis helpers for the tissue experiments (tools/tissue.sh, tools/cellmech/tissue/report.py).
 
 Units are LAMMPS units micro: um, us, pg, nN, kPa; energy nN um = 1e-15 J (fJ); Gc in pg/us^2
 (1000 pg/us^2 = 1 J/m^2), so Gc x area (um^2) is in nN um as well.

@@ -18,11 +18,7 @@ import sys
 import time
 import traceback
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.dirname(HERE))      # tools/: cellgen, membrane
-
-ROOT = os.path.dirname(os.path.dirname(HERE))
+from ..params import RES_LEVEL, ROOT
 
 
 def main():
@@ -37,14 +33,17 @@ def main():
         if os.path.isfile(os.path.join(ROOT, "lammps-inputs", f)):
             shutil.copy(os.path.join(ROOT, "lammps-inputs", f), snap)
     os.environ["CELLMECH_INPUTS"] = snap
+    # imported after CELLMECH_INPUTS is set: common reads it at import
     global cases, report
-    from common import RES_LEVEL, Runner
-    import cases
-    import report
+    from .common import Runner
+    from . import cases, report
     if res not in RES_LEVEL:
         sys.exit(f"validate: RES must be one of {', '.join(RES_LEVEL)}")
     level = RES_LEVEL[res]
     wanted = [c.strip() for c in os.environ.get("CASES", ",".join(cases.CASES)).split(",") if c.strip()]
+    unknown = [c for c in wanted if c not in cases.CASES]
+    if unknown:
+        sys.exit(f"validate: CASES must name cases among {','.join(cases.CASES)}, got {','.join(unknown)}")
     plotdir = os.path.join(out, "validation")
     os.makedirs(plotdir, exist_ok=True)
     run = Runner(work, nprocs=int(os.environ.get("NP", "1")))

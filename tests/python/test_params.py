@@ -1,0 +1,83 @@
+"""cellmech.params: Table I read from lammps-inputs/cell-model.lmp, the level table, and the command
+line the shell scripts read them with (one source for the generator, inputs, scripts and tests)."""
+import os
+import re
+import subprocess
+import sys
+
+import pytest
+
+from cellmech import params
+
+ROOT = params.ROOT
+
+
+def test_table_is_cell_model_lmp():
+    """Every `variable NAME index VALUE` line of cell-model.lmp, first definition, numbers as floats."""
+    t = params.table()
+    lines = re.findall(r"^variable\s+(\w+)\s+index\s+(\S+)", open(params.MODEL_FILE).read(), re.M)
+    print(f"{len(t)} parameters: {t}")
+    assert len(lines) >= 13 and len(t) == len({k for k, _ in lines})
+    for k, v in lines:
+        assert str(t[k]) == v or t[k] == float(v)
+    # the stiff cell of the paper's Table I, in units micro
+    assert (t["G"], t["t0"], t["rho0"], t["c"]) == (8.0e5, 0.126, 1.0, 264.6)
+    assert t["lamlog"] == "debond.log"
+
+
+def test_table_first_definition_and_overrides_win(tmp_path):
+    """As in LAMMPS: an index variable defined twice keeps its first value; -var (overrides) wins."""
+    f = tmp_path / "m.lmp"
+    f.write_text("variable G index 1.0  # a\nvariable G index 2.0\n  variable s index 3\n"
+                 "variable x equal 4\nvariable name index abc\n")
+    assert params.table(str(f)) == {"G": 1.0, "s": 3.0, "name": "abc"}
+    assert params.table(str(f), {"s": 9.0}) == {"G": 1.0, "s": 9.0, "name": "abc"}
+
+
+def test_level_table():
+    """Level 4 is cell-model.lmp's defaults; a level coarser doubles r0 and reach, f0 grows 2^3."""
+    t = params.table()
+    for k in ("s", "r0", "f0", "reach"):
+        assert params.LEVELS[4][k] == t[k], k
+    for lv in (3, 4):
+        fine, coarse = params.LEVELS[lv + 1], params.LEVELS[lv]
+        assert coarse["r0"] == 2 * fine["r0"] and coarse["reach"] == 2 * fine["reach"]
+        assert coarse["f0"] == 8 * fine["f0"]
+    assert [params.wall_nodes(lv) for lv in (3, 4, 5)] == [642, 2562, 10242]
+    assert params.LEVELS[5]["s"] == 2.07 and params.LEVELS[5]["dt"] == 0.0005
+    assert params.model_vars(3) == dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001)
+    with pytest.raises(ValueError, match="level must be one of 3, 4, 5, got 7"):
+        params.level(7)
+
+
+def cli(*args):
+    env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "tools"))
+    p = subprocess.run([sys.executable, "-m", "cellmech.params", *map(str, args)], env=env,
+                       capture_output=True, text=True, timeout=60)
+    print(args, p.returncode, p.stdout.strip(), p.stderr.strip())
+    return p
+
+
+def test_command_line():
+    assert cli("level", 4, "nfluid", "s", "r0", "f0", "reach", "dt", "nodes").stdout.split() == \
+        ["3500", "3.2", "1.6", "10000.0", "2.0", "0.001", "2562"]
+    assert cli("table", "G", "t0", "c").stdout.split() == ["800000.0", "0.126", "264.6"]
+    assert cli("cell", "R", "M_wall", "P").stdout.split() == ["30.0", "13000.0", "364.0"]
+    p = cli("level", 7, "s")
+    assert p.returncode == 2 and "level must be one of 3, 4, 5, got 7" in p.stderr
+    p = cli("level", 4, "bogus")
+    assert p.returncode == 2 and "unknown bogus" in p.stderr
+
+
+def test_shell_scripts_read_the_table():
+    """tools/common.sh's level_params gives the shell the same row (level 5: s = 2.07 um, where the
+    formula 3.2 2^(4-level) of the old experiments.sh gave 1.6)."""
+    p = subprocess.run(["bash", "-c", f"source {ROOT}/tools/common.sh && level_params 5 s r0 f0 dt"],
+                       capture_output=True, text=True, timeout=60)
+    print(p.stdout, p.stderr)
+    assert p.returncode == 0 and p.stdout.split() == ["2.07", "0.8", "1250.0", "0.0005"]
+    for script in ("main-job.sh", "experiments.sh", "tissue.sh", "benchmark.sh", "benchmark-tissue.sh",
+                   "validate-inflation.sh"):
+        text = open(os.path.join(ROOT, "tools", script)).read()
+        assert "level_params" in text, script
+        assert not re.search(r"\bs=?6\.4\b|8\.0e4|1\.0e4\*k", text), f"{script} has its own level table"

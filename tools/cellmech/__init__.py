@@ -1,0 +1,6 @@
+"""cellmech's Python tools: the generator (cellgen), the membrane reference (membrane), the model's
+parameters and level table (params), the MPI launch line (launch), the validation suite
+(validation), the paper's experiments (experiments) and the tissue report (tissue).
+
+tools/ is the folder to put on PYTHONPATH (tools/common.sh and the tests do); the scripts in tools/
+(cellgen.py, membrane.py, plot_*.py) import the package from their own folder."""

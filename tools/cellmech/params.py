@@ -1,0 +1,115 @@
+"""The model's parameters, one source for the generator, the inputs, the scripts and the tests.
+
+Where each number lives (and nowhere else):
+  * Table I of the paper (wall, fluid, contacts) in lammps-inputs/cell-model.lmp, as the
+    `variable NAME index VALUE` lines LAMMPS reads; `table()` parses them. A script or -var that
+    sets one of them first wins in LAMMPS, and `table(overrides)` does the same here.
+  * The cell that is not in the force field (radius, wall mass, turgor, the soft wall) and the
+    per-resolution lengths and time steps (the level table, LEVELS) here, in this module.
+Shell scripts read both through the command line:
+  python3 -m cellmech.params level 4 nfluid s r0 f0 reach dt    -> 3500 3.2 1.6 10000.0 2.0 0.001
+  python3 -m cellmech.params table G t0 c                       -> 800000.0 0.126 264.6
+  python3 -m cellmech.params cell R M_wall P                    -> 30.0 13000.0 364.0
+(tools/common.sh sets PYTHONPATH for them). Units micro: um, pg, us, kPa, nN, mPa s.
+"""
+import argparse
+import os
+import re
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+MODEL_FILE = os.path.join(ROOT, "lammps-inputs", "cell-model.lmp")
+
+# Model lengths per level of the wall's icosphere (10 4^level + 2 nodes). A level coarser doubles
+# the wall spacing, the contact distance r0 and the barycentre reach, and the contact strength f0
+# (force x length, acting at r0) grows 2^3. Level 4 is the paper's (2562 + 3500) and the values of
+# cell-model.lmp. The smoothing length s belongs to the fluid and follows the fluid spacing dx: the
+# paper's fluid counts (440, 3500, 14000) refine dx by 1.9 from level 3 to 4 (5.71 -> 3.01 um)
+# but only by 1.55 from 4 to 5 (-> 1.95 um), so level 5 keeps level 4's s/dx = 1.063 with
+# s = 2.07 um (halving s to 1.6 would leave s/dx = 0.82, fewer kernel neighbours than at the
+# other levels; the formula 3.2 2^(4-level) gives 1.6 there and is not the table). Level 5 has a
+# wall node a quarter as heavy: its fastest tether mode (about 4 ns period) needs dt = 0.5 ns.
+LEVELS = {
+    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001),
+    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001),
+    5: dict(nfluid=14000, s=2.07, r0=0.8, f0=1.25e3, reach=1.0, dt=0.0005),
+}
+# the resolutions the experiment and validation scripts name
+RES_LEVEL = {"coarse": 3, "paper": 4, "study": 4, "fine": 5}
+
+# The cell around the force field (paper Table I and Sec. III): unstressed radius R, wall mass,
+# turgor P of the stiff cell; the soft wall (E = 20 MPa, t0 = 5 nm) at its turgor of 0.1 kPa.
+CELL = dict(R=30.0, M_wall=1.3e4, P=364.0)
+SOFT = dict(G=20.0e3 / 3.0, t0=0.005, P=0.1)
+
+_VARIABLE = re.compile(r"^\s*variable\s+(\w+)\s+index\s+(\S+)")
+
+
+def table(path=MODEL_FILE, overrides=None):
+    """Table I as cell-model.lmp sets it: {name: value} of its `variable NAME index VALUE` lines
+    (numbers as floats, others as strings); overrides (like -var) win."""
+    out = {}
+    with open(path) as f:
+        for line in f:
+            m = _VARIABLE.match(line)
+            if m and m.group(1) not in out:
+                try:
+                    out[m.group(1)] = float(m.group(2))
+                except ValueError:
+                    out[m.group(1)] = m.group(2)
+    out.update(overrides or {})
+    return out
+
+
+def stiff():
+    """The stiff cell of Table I: G, t0 from cell-model.lmp, turgor P."""
+    t = table()
+    return dict(G=t["G"], t0=t["t0"], P=CELL["P"])
+
+
+def wall_nodes(level):
+    return 10 * 4 ** level + 2
+
+
+def level(lvl):
+    """The level table's row, with the wall node count; a clear error for a level not in it."""
+    if lvl not in LEVELS:
+        raise ValueError(f"level must be one of {', '.join(map(str, LEVELS))}, got {lvl!r}")
+    return dict(LEVELS[lvl], nodes=wall_nodes(lvl))
+
+
+def model_vars(lvl):
+    """The -var settings of cell-model.lmp that depend on the level."""
+    p = level(lvl)
+    return dict(s=p["s"], r0=p["r0"], f0=p["f0"], reach=p["reach"], dt=p["dt"])
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(prog="python3 -m cellmech.params",
+                                description="print model parameters, space-separated, for scripts")
+    sub = p.add_subparsers(dest="what", required=True)
+    lv = sub.add_parser("level", help="a row of the level table")
+    lv.add_argument("level", type=int)
+    lv.add_argument("keys", nargs="*", help=f"of {', '.join(list(LEVELS[4]) + ['nodes'])} (default all)")
+    tb = sub.add_parser("table", help="Table I from lammps-inputs/cell-model.lmp")
+    tb.add_argument("keys", nargs="*")
+    ce = sub.add_parser("cell", help="the cell around the force field")
+    ce.add_argument("keys", nargs="*", help=f"of {', '.join(CELL)}")
+    a = p.parse_args(argv)
+    if a.what == "level":
+        try:
+            row = level(a.level)
+        except ValueError as e:
+            p.exit(2, f"{p.prog} level: error: {e}\n")
+    else:
+        row = table() if a.what == "table" else CELL
+    keys = a.keys or list(row)
+    bad = [k for k in keys if k not in row]
+    if bad:
+        p.exit(2, f"{p.prog} {a.what}: error: unknown {', '.join(bad)}; expected one of {', '.join(row)}\n")
+    print(" ".join(f"{row[k]}" for k in keys) if a.keys else
+          "\n".join(f"{k} {v}" for k, v in row.items()))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
