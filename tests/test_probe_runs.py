@@ -22,8 +22,9 @@ import subprocess
 import numpy as np
 
 import lmptest as T
+from cellmech import params
 
-COARSE = dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dir=T.INPUTS, data="cell.data")
+COARSE = dict(T.COARSE, dir=T.INPUTS, data="cell.data")
 HEAD = """
 units           micro
 atom_style      molecular
@@ -46,8 +47,7 @@ def run(text, d, log, nprocs=1, limit_gb=None, timeout=300, screen=False):
     cmd = [T.LMP, "-in", path, "-log", log] + ([] if screen else ["-screen", "none"])
     for k, v in COARSE.items():
         cmd += ["-var", k, str(v)]
-    if nprocs > 1:
-        cmd = [T.MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
+    cmd = T.mpi_command(cmd, nprocs, T.MPIEXEC)
     env = dict(os.environ, LAMMPS_PLUGIN_PATH=os.path.dirname(T.PLUGIN))
 
     def limit():
@@ -223,7 +223,7 @@ def docs_match_code(d):
 
 def extreme_values(d):
     """5.11: parseable values outside any meaningful range stop with an error."""
-    sph = "pair_coeff 2 2 cell/sph {} {} 0.0 1.0 6.4\n"
+    sph = "pair_coeff 2 2 cell/sph {} {} 0.0 1.0 " + str(COARSE["s"]) + "\n"
     cases = [
         ("rho0 1e-300", MODEL + sph.format("1e-300", 264.6) + OSMOSIS,
          r"pair_coeff cell/sph: reference density rho0 .*1e-300"),
@@ -261,7 +261,8 @@ def extreme_values(d):
 
 def main():
     d = T.workdir("probe-runs")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", 3.2, cwd=d)
+    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", params.LEVELS[3]["nfluid"],
+              "--inset", COARSE["r0"], cwd=d)
     burst_stops_osmosis(d)
     blow_up_named(d)
     sparse_molecule_ids(d)
