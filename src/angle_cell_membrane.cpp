@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: angle style cell/membrane
 
    Every wall triangle (an angle a-b-c of the topology, written by cellgen.py

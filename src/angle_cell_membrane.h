@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: the cell wall as an incompressible Neo-Hookean membrane,
    one constant-strain element per wall triangle (Eqs. M1, M2), with
    damping along the triangle's edges (Eq. 11).

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: bond style cell/lamella
 
    The middle lamella glues the walls of neighbouring cells. A lamella bond

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: middle lamella between the walls of neighbouring cells, a
    cohesive traction-separation bond (Xu & Needleman exponential law) that
    debonds irreversibly at 10 delta_c.

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: bond style cell/tether
 
    Each tether's rest length l0 is the distance between the REFERENCE

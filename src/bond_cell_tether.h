@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: Neo-Hookean tether of the DEM cell wall (Eq. 19) with
    damping along the bond (Eq. 11) and optional critical-stretch failure.
 ------------------------------------------------------------------------- */

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: checks shared by the styles (see cell_checks.h)
 ------------------------------------------------------------------------- */
 

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: checks shared by the styles that turn silent NaN and
    misleading errors into messages that name the cause.
 ------------------------------------------------------------------------- */

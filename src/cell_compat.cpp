@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: plugin/LAMMPS compatibility check (see cell_compat.h)
 ------------------------------------------------------------------------- */
 

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: check that the LAMMPS loading this plugin is the one it was
    built against. LAMMPS itself only warns on a version mismatch and does
    not check integer sizes or MPI at all; a mismatch there corrupts memory.

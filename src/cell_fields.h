@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: what the styles share about the atoms of a cell: the per-atom
    fields of fix property/atom that several styles read (names without the
    d_ / d2_ prefix) and what is derived from them, the wall triangles'

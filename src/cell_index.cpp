@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: the cells of a system and their per-cell array slots (see
    cell_index.h)
 ------------------------------------------------------------------------- */

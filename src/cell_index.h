@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: the cells of a system and their per-cell array slots.
    A cell is a molecule ID >= 1; the IDs need not be 1..N. Per-cell arrays
    are indexed by slot 1..N, the rank of the cell's ID among the IDs

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: LAMMPS plugin for the micromechanics of biological cells.
    Pure physics of the SPH-DEM plant cell model (Van Liedekerke et al.,
    Phys. Rev. E 81, 061906 (2010)), free of LAMMPS so tests can call it.

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: the plugin entry point. All styles of the package register
    here, after a check that the LAMMPS loading us is the one we were built
    against (LAMMPS only warns on version mismatch and does not compare

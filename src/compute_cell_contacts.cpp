@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: compute cell/contacts
 
    compute ID group cell/contacts

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: per-cell-pair observables of a tissue: middle-lamella bonds
    and area (intact and debonded), the force the lamella and the wall-wall
    contacts carry between the two cells, and their contact area.

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: compute cell/props
 
    compute ID group cell/props [normal nx ny nz] [leaks yes|no]

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: per-cell observables (one row per molecule ID): volume, wall
    area, fluid pressure and mass, tether stretch, equatorial force (Eq. 23),
    fluid count and fluid outside its own wall (leaks), broken tethers, and

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: compute cell/shear/atom
 
    SPH estimate of the protoplasm's viscous shear stress (Eqs. 24-26):

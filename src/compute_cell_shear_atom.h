@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: per-particle protoplasm shear stress (paper Eqs. 24-26).
 ------------------------------------------------------------------------- */
 

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: fix cell/fluid
 
      drho_i/dt = drho^c_i/dt + (rho_i / m_i) dm_i/dt                        (Eq. 9)

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: integrates the density and mass of the protoplasm particles:
    continuity (from pair cell/sph) plus osmotic exchange through the cell
    wall (Eqs. 9-10), per cell (molecule ID).

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: internal fix CELL_LAMELLA_BREAK
 
    When a middle-lamella bond debonds, bond style cell/lamella removes it

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: internal fix CELL_LAMELLA_BREAK, the bookkeeping of debonded
    middle-lamella bonds between cells. Created by bond style cell/lamella
    with the ID cell_debonded; kept apart from tether rupture (cell_broken).

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: internal fix CELL_TETHER_BREAK
 
    When a tether breaks, bond style cell/tether removes it from the bond

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: internal fix CELL_TETHER_BREAK, the bookkeeping of broken
    wall tethers. Created by bond style cell/tether when a bond type has a
    critical stretch (bond_coeff ... lamf v), with the ID cell_broken.

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: the cell walls as triangulated surfaces for ParaView (legacy
    VTK PolyData), one file every N steps.
 ------------------------------------------------------------------------- */

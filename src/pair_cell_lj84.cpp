@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: pair style cell/lj84
 
    F_ik = f0 [(r0/r)^8 - (r0/r)^4] / r^2 r_ik - gamma (v_ik . e_ik) e_ik,  r < r0

@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: 8-4 excluded-volume repulsion (Eq. 12) with contact damping,
    between fluid and wall and between non-bonded wall particles.
 ------------------------------------------------------------------------- */

@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: pair style cell/sph
 
    Weakly compressible SPH for the protoplasm (Van Liedekerke et al. 2010):

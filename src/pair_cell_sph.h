@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: SPH protoplasm (Eqs. 3-7): cubic-spline kernel, Tait equation
    of state with background turgor, symmetric pressure force, Morris
    laminar viscosity and the continuity equation, with per-particle mass.

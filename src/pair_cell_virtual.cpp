@@ -1,4 +1,5 @@
 /* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: pair style cell/virtual
 
    For each wall triangle (a, b, c) -- an angle of the topology -- a virtual

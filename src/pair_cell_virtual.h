@@ -1,4 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: virtual wall particles (paper Sec. II C): one massless particle
    at the barycentre of each wall triangle repels the fluid with the 8-4
    law of pair cell/lj84 (whose coefficients it shares); its reaction is

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The Poiseuille channel of test_poiseuille.py and test_shear.py (a fixture, not a test): SPH
 fluid between lattice walls driven by a body force, units micro.
 Fluid: rho0 = 1, mu = 1000 mPa s (nu = mu/rho0 = 1000 um^2/us), c = 10 um/us, P0 = 10 kPa,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Helpers for the script tests: run lmp with the cellmech plugin, read its outputs.
 
 Environment (set by CTest, see tests/CMakeLists.txt): LMP, CELLMECH_PLUGIN, CELLMECH_ROOT, MPIEXEC,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 2, check 3: in-vacuo breathing of the wall (Eq. A5) for the stiff and soft walls of
 Table I. The wall is stretched isotropically by lam and released with no fluid; the period of the
 mean radius must match omega = (1/R) sqrt(4E/rho_s), rho_s = M_wall/(4 pi R^2 t0), within 1%.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 5, case 2 (one sound speed, paper resolution): breathing of the fluid-filled stiff cell.
 
 The cell (2562 wall nodes, ~3500 fluid) is inflated to 364 kPa (c = 264.6 m/s), its wall nodes

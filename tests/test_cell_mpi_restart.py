@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 3, check 7: a fluid-filled cell (SPH, virtual particles, osmosis, tethers, contacts) gives
 the same forces on 1 and 2 MPI ranks at step 0 (round-off of the summation order: 1e-12 of the
 largest force), and a run continued from write_restart / read_restart matches the uninterrupted

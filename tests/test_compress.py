@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 3, check 6 (coarse, as CI runs it): quasistatic compression of the inflated stiff cell
 between plates to 20% strain (lammps-inputs/in.compress), at two plate speeds, 0.5 and 0.25 m/s.
 Both are slow against the cell's relaxation (about 1 us; 20% strain takes 24 and 48 us), so the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 5, case 7 (coarse): inviscid energy balance. With viscosity, tether damping, contact damping
 and osmosis off, a cell whose fluid starts at P0 = 100 kPa pushes its wall out and oscillates;
 kinetic + potential energy (tethers, 8-4 contacts, virtual particles and the fluid's internal

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Every example input in lammps-inputs/ runs, in a short form, on 1 rank and on 2 ranks.
 
 Each entry names the data the example needs (made with tools/cellgen.py) and the variables that

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Short forms of the paper's experiments (issue 4; lammps-inputs/in.impact, in.relax, in.turgor,
 in.failure) on the coarse cell (642 wall nodes, ~460 fluid particles), with the physics such a cell
 still shows. The full set and its report: tools/experiments.sh.

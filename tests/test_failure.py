@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 4, failure: tethers break above lam_f (tension only) and the cell bursts.
 
 A coarse stiff cell is inflated to turgor and compressed (in.compress, lamf = 1.04 as in the paper):

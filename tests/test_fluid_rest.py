@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """SPH protoplasm at rest (pair cell/sph + fix cell/fluid, Eqs. 5-7): a fluid at rest stays at rest.
 
 Units micro (um, pg, us; kPa; mPa s). Fluid: rho0 = 1, c = 264.6 um/us (Table I), P0 = 100 kPa,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 2, check 2: the cell generator (tools/cellgen.py).
 
 Icosphere of level n: 10*4^n+2 nodes, every node of degree 6 but 12 of degree 5, a closed and

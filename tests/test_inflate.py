@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 3, check 5 (coarse, as CI runs it): inflation of a cell by osmosis (lammps-inputs/in.inflate).
 
 Coarse cell: 642 wall nodes and ~460 fluid particles, lengths of the model (s, r0, reach) scaled by

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 3, check 5 at the paper's resolution (2562 wall nodes, 3500 fluid particles; ~1 min per
 pressure on 2 cores): the stiff cell inflated by osmosis to P = 100, 200, 364 and 400 kPa.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """compute cell/props counts fluid outside its own wall (winding number of the closed wall mesh,
 with a ball around the centre skipped as surely inside). A check that can fail: in a coarse cell,
 fluid particles are added at known places - outside the wall (beyond a node, beyond a face),

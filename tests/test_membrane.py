@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 5, case 5: the membrane compression reference (tools/membrane.py) on its own limits.
 
 The reference is an axisymmetric Neo-Hookean membrane of fixed contents squeezed between two

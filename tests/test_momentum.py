@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 3, check 2: pairwise forces are antisymmetric. An isolated cell (fluid, wall, virtual
 particles, no plates, no osmosis) with random velocities and a pressurised fluid (P0 = 100 kPa)
 conserves total linear momentum to round-off, and, with the fluid inviscid, angular momentum too:

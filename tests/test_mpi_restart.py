@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 2, check 7: the same forces on 1 and 2 MPI ranks at step 0, and a run continued from
 write_restart / read_restart that matches an uninterrupted run.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 2, check 5: plates on an empty wall (lammps-inputs/in.plates, fix wall/harmonic).
 
 A wall with no fluid is approached by the top plate at 1 m/s while the bottom plate stays.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Body-force driven Poiseuille flow between two walls of fixed SPH particles (Morris, Fox & Zhu,
 J. Comput. Phys. 136, 214 (1997)): the Morris laminar viscosity of Eq. 5 in steady shear, with
 pair cell/sph + fix cell/fluid.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Defects found by probing as a careless user would (issue 13, section 5): each input below once
 crashed or ran silently wrong, and must now stop with a LAMMPS error that names the style and says
 what was expected (never a signal, never exit 0).

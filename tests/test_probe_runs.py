@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Defects found by probing (issue 13, section 5) that need a run to show: each check below failed
 before its fix.
 

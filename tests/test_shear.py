@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Protoplasm shear stress (compute cell/shear/atom, paper Eqs. 24-26) in steady Poiseuille flow,
 where it is known exactly: tau_xy(y) = mu du/dy = rho0 G (L/2 - y), linear across the channel,
 zero on the centre line, rho0 G L/2 at the walls, whatever the viscosity.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 2, check 4: uniaxial stretching of a flat 400-node tether sheet (paper Appendix 1).
 
 The sheet (20 x 20 nodes, bond a) is stretched in X with the bond rows along X and, rotated, along

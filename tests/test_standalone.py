@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The repository stands alone: nothing it tracks points at files outside it, and it carries its
 license.
 
@@ -6,7 +7,10 @@ license.
    mentions the model summary or the shared folder of the workspace the package was written in:
    a user who clones the repository has neither, so the model is described in docs/model.md;
  * docs/model.md exists and README.md and docs/index.rst link to it;
- * LICENSE holds the GNU GPL version 2 text (LAMMPS, which the plugin links, is GPL-2.0).
+ * LICENSE holds the GNU GPL version 2 text (LAMMPS, which the plugin links, is GPL-2.0), README.md
+   names the package's license, and every tracked source file (C++, Python, shell, CMake, LAMMPS
+   inputs under src, tools, tests, lammps-inputs) says it in an SPDX-License-Identifier line among
+   its first lines. Data (YAML reference data, JSON, CSV, pictures) and docs are not source here.
 
 The tracked files come from `git ls-files`; outside a git checkout (an unpacked archive) the test
 walks the same folders instead.
@@ -19,6 +23,10 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FOLDERS = ("src", "docs", "tools", "tests", "lammps-inputs")
 TOP_FILES = ("README.md", "CMakeLists.txt")
+LICENSE_ID = "GPL-2.0-or-later"
+SPDX = re.compile(rb"SPDX-License-Identifier:\s*(\S+)")
+SPDX_LINES = 5          # the tag sits at the top, after a shebang or inside the opening comment
+SOURCE_SUFFIXES = (".cpp", ".h", ".py", ".sh", ".lmp")
 
 # Spelled in pieces so that this file does not match its own patterns.
 FORBIDDEN = [re.compile(p.encode()) for p in (r"MODEL" + r"\.md", r"\.\./" + r"shared",
@@ -40,6 +48,18 @@ def tracked_files():
             dirs[:] = [x for x in dirs if x not in ("__pycache__", ".git")]
             files += [os.path.relpath(os.path.join(d, n), ROOT) for n in names]
     return sorted(files), "a walk of the folders (no git checkout)"
+
+
+def is_source(f):
+    parts = f.split("/")
+    name = parts[-1]
+    if name == "CMakeLists.txt":
+        return True
+    if parts[0] not in ("src", "tools", "tests", "lammps-inputs"):
+        return False
+    # LAMMPS inputs: every file of lammps-inputs, and the in.* inputs elsewhere (tools/bench)
+    return (name.endswith(SOURCE_SUFFIXES) or parts[0] == "lammps-inputs"
+            or name.startswith("in."))
 
 
 def main():
@@ -90,6 +110,28 @@ def main():
         print(f"LICENSE: {os.path.getsize(lic)} bytes, GNU GPL version 2 text: {ok}")
         if not ok:
             failures.append("LICENSE is not the GNU GPL version 2 text")
+
+    sources = [f for f in files if is_source(f) and os.path.isfile(os.path.join(ROOT, f))]
+    untagged, other = [], []
+    for f in sources:
+        with open(os.path.join(ROOT, f), "rb") as fh:
+            head = b"".join(fh.readline() for _ in range(SPDX_LINES))
+        m = SPDX.search(head)
+        if not m:
+            untagged.append(f)
+        elif m.group(1).decode() != LICENSE_ID:
+            other.append(f"{f}: {m.group(1).decode()}")
+    print(f"source files: {len(sources)}, with SPDX-License-Identifier: {LICENSE_ID} in the first "
+          f"{SPDX_LINES} lines: {len(sources) - len(untagged) - len(other)}, without: "
+          f"{len(untagged)}, another identifier: {len(other)}")
+    for f in untagged + other:
+        print("  " + f)
+    if untagged or other:
+        failures.append(f"{len(untagged) + len(other)} source files without the SPDX line of "
+                        f"{LICENSE_ID}")
+    with open(os.path.join(ROOT, "README.md")) as fh:
+        if LICENSE_ID not in fh.read():
+            failures.append(f"README.md does not name the license {LICENSE_ID}")
 
     for msg in failures:
         print("FAIL: " + msg)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Tissue on MPI, across restarts, and its failure outputs (issue 9, section 4 and "what must be
 shown"), on a column of three coarse glued cells stacked along z (cellgen.py tissue --n 1 1 3),
 inflated briefly:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The tissue generator (tools/cellgen.py tissue): glued polyhedral cells.
 
 Every check is made here, from the data file, independently of the generator's own checks: each

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Tissue, protoplasm kept apart: the fluid of one cell never interacts through SPH with the fluid
 of another cell, and no mass crosses between two adjacent cells held at different pressures.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 5: the validation suite (tools/validate.sh, tools/cellmech/validation/) at RES=coarse, as CI runs
 it: 642 wall nodes, ~460 fluid particles (level 3), a few minutes on one core. The report and the
 JSON summary are written to work-validation/; each case is checked against a tolerance that the

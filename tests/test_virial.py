@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 4, outputs: the per-atom virial of every cellmech force (SPH pressure and Morris viscosity,
 8-4 contacts, virtual particles, tethers) sums to the global virial, so `compute stress/atom`
 gives the true stress. A coarse fluid-filled cell with random velocities (viscous forces on) runs a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """fix cell/vtk: the wall as a VTK PolyData surface, read back with the VTK library.
 
 A coarse wall (642 nodes, 1280 triangles) is stretched isotropically by lam = 1.01 about its

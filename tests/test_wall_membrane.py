@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Angle style cell/membrane (the wall as Neo-Hookean membrane elements) inside LAMMPS, on a
 level-3 wall without fluid (642 nodes, 1280 triangles); the single element against the closed
 forms is in tests/unit/test_physics.cpp (MembraneElement).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Benchmark (not a test): how the cost of a tissue grows with its cells. Simple cubic blocks of
 # 1, 8, 27 and 64 coarse cells (cellgen.py tissue, level 3: 642 wall nodes and ~440 fluid per cell,
 # glued by the middle lamella) run the tissue force field (tissue-model.lmp: tethers, lamella,

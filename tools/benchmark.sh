@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Benchmark (not a test): particle-steps per second of
 #   (a) cell/full    the full cell at the paper's resolution (2562 wall nodes + 3527 fluid),
 #                    lammps-inputs/in.inflate with its cell-model.lmp, 2000 steps;

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """cellgen.py cell|sheet|tissue ...: the generator's command line (tools/cellmech/cellgen.py;
 `python3 tools/cellgen.py --help`). Python puts this script's folder, tools/, on the path, so the
 package imports without any path setting."""

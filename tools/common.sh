@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Sourced by the shell scripts in tools/: the Python package cellmech (tools/cellmech) on the path,
 # the model's level table from it (one source: tools/cellmech/params.py), and the one MPI launch
 # line (its Python form: cellmech.launch.mpi_command).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The paper's experiments (docs/model.md section 4, paper Secs. III A-D, Figs. 4-11) in one command:
 # quasistatic compression at two rates, turgor series, relaxation (stiff and soft, viscosities,
 # zeta = 1.1 wall), impact at 5 m/s (stiff and soft, 1-1000 mPa s), failure (lamf = 1.04,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The main job: set up, then inflate a coarse stiff cell to turgor and compress it between plates to
 # 20% strain; write the force-strain data (CSV) and plots (PNG) to results/main/, and the walls as
 # VTK surfaces during the compression (walls.STEP.vtk, for ParaView). Then a coarse tissue of 2x2x2

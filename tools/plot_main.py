@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Turn the main job's LAMMPS outputs (inflate.dat, compress.dat) into CSV tables and PNG plots."""
 import sys
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The main job's tissue part: stress-strain of a tissue block compressed to failure
 (in.tissue-compress output) as CSV and PNG, with the failure events marked: wall rupture (a cell
 loses a tether) and cells coming apart (a lamella bond lets go).

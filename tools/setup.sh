@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Set up a fresh Debian 12 machine (as root) for the cellmech LAMMPS plugin:
 #   1. install build dependencies from Debian,
 #   2. obtain LAMMPS (a Debian source package: LAMMPS_VERSION) unless LAMMPS_SRC is given,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Set up (or reuse) everything and run the whole test suite with CTest against the default LAMMPS
 # release (tools/setup.sh), then the unit tests and short cell runs against the other release the
 # package supports, built beside it (build-VERSION/). OTHER_LAMMPS=0 skips the second part.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Tissue experiments in one command, with a report (tools/cellmech/tissue/report.py):
 #   1. pair: two glued cells stacked along z pressed to 10% and pulled apart (in.tissue-pair), and a
 #      single cell of the same size pressed alone: force vs strain, contact and glued area,

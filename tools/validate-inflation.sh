@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Inflation of the stiff cell at the paper's resolution (2562 wall nodes, 3500 fluid particles) to
 # P = 100, 200, 364 and 400 kPa: mean pressure, stretch against Young-Laplace, equatorial force
 # against P pi R^2, leaks, mass balance. Prints a table and the wall time. Not part of CI.

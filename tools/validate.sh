@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Validation suite (issue 5): runs the validation cases at one resolution and writes a report
 # (validation.md with tables and PNG plots, validation-summary.json).
 #   RES=coarse (default)  642 wall nodes + 440 fluid; minutes     -> results/validation-coarse/

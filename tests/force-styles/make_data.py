@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Make data.cell, the system of the force-style harness tests, from a two-cell tissue of cellgen.
 
     python3 tools/cellgen.py tissue -o two.data --centres centres.txt --level 1 --nfluid 4 \

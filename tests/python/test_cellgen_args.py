@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """cellgen.py refuses bad arguments at once, in one line, with exit status 2 (issue 13, defect 5.3).
 
 Before: `cell --inset 40` and `--nfluid 100000000` filled the memory until the kernel killed the

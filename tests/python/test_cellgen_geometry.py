@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """cellgen's geometry: the icosphere (counts, orientation, volumes), the fluid lattice and the
 count search, against closed forms and brute force."""
 import math

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The one MPI launch line: cellmech.launch.mpi_command (Python) and mpi_run (tools/common.sh)."""
 import os
 import subprocess

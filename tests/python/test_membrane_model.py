@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The membrane reference (cellmech.membrane): Young-Laplace inflation and the plate compression's
 own balances (the thorough study is tests/test_membrane.py)."""
 import math

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """cellmech.params: Table I read from lammps-inputs/cell-model.lmp, the level table, and the command
 line the shell scripts read them with (one source for the generator, inputs, scripts and tests)."""
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """tools/setup.sh with SKIP_APT=1 leaves apt alone: no apt-get, apt, dpkg or apt-cache call and no
 deb-src list, even where the LAMMPS source still has to be fetched (it stops and says so)."""
 import os

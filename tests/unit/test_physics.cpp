@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Physics of the cell model, checked without LAMMPS (cell_physics.h).
 #include "cell_physics.h"
 

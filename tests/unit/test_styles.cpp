@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // cellmech styles inside an in-process LAMMPS: forces against the formulas, bad input gives a
 // LAMMPS error that names the command and what was expected, and the plugin guard.
 #include "atom.h"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """cellmech's Python tools: the generator (cellgen), the membrane reference (membrane), the model's
 parameters and level table (params), the MPI launch line (launch), the validation suite
 (validation), the paper's experiments (experiments) and the tissue report (tissue).

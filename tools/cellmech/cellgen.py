@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """cellgen: build LAMMPS data files for the cellmech plant-cell model.
 
 Geometry of one cell (Van Liedekerke et al. 2010, docs/model.md section 2.2):

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Running LAMMPS on MPI ranks: the one Python form of the launch line (tools/common.sh has the
 shell's, mpi_run). Open MPI refuses root without --allow-run-as-root, and the 2-core machines the
 package is tested on have fewer slots than ranks asked for, hence --oversubscribe."""

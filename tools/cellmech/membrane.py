@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """membrane: an inflated thin Neo-Hookean membrane squeezed between two rigid plates.
 
 Independent reference for the quasistatic compression of the cell (Feng and Yang 1973 style,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The model's parameters, one source for the generator, the inputs, the scripts and the tests.
 
 Where each number lives (and nowhere else):

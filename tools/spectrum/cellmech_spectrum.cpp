@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // cellmech-spectrum: amplitude spectrum of a sampled time series with FFTW, for the breathing
 // validation (paper Appendix 2, Figs. 16-17).
 //

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Analysis of the experiment outputs of tools/experiments.sh (and of the short forms in
 tests/test_experiments.py): relaxation times, impact-zone shear stresses, rate independence,
 turgor slopes, failure strain, crack origin and escaping fluid.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Report of the paper's experiments (tools/experiments.sh): plots, snapshot pictures, a table that
 sets each result of docs/model.md section 4 beside ours, and the wall time of every run.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Report of the tissue experiments (tools/tissue.sh): a glued pair pressed and pulled apart, a
 block compressed to failure at two turgors and two lamella strengths, impacts at three speeds.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Readers and analysis helpers for the tissue experiments (tools/tissue.sh, tools/cellmech/tissue/report.py).
 
 Units are LAMMPS units micro: um, us, pg, nN, kPa; energy nN um = 1e-15 J (fJ); Gc in pg/us^2

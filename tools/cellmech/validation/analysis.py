@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Reading the measured quantity out of a run's time series (shared by the validation cases and
 the tests)."""
 import numpy as np

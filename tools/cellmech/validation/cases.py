@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The validation cases (issue 5). Each case runs its LAMMPS inputs through a Runner at a wall
 subdivision level and returns an Entry: measured values, references computed from the formulas
 (references.py), relative errors, the resolution, what the paper reported, notes and plots."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Running LAMMPS and cellgen for the validation cases; the resolutions of the model.
 
 A run is skipped when its outputs exist and were made with the same arguments (a stamp file per

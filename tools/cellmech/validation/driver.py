@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Validation suite driver (issue 5): `bash tools/validate.sh` runs it.
 
 Environment:

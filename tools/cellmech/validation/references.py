@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Reference values of the validation cases, computed from the paper's formulas (units micro:
 um, pg, us, kPa, nN). Nothing here is a stored number: every reference follows from the model
 parameters the caller passes."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Write validation.md and validation-summary.json from the case entries."""
 import datetime
 import json
