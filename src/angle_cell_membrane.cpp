@@ -18,6 +18,7 @@
 
 #include "angle_cell_membrane.h"
 
+#include "cell_checks.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
 
@@ -66,6 +67,8 @@ AngleCellMembrane::~AngleCellMembrane()
 void AngleCellMembrane::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  // a membrane wall may have no tethers to watch each step for a blow-up (bond style zero)
+  if (!force->bond_match("cell/tether")) CellMech::check_step_motion(lmp, "Angle style cell/membrane");
 
   double **x = atom->x;
   double **v = atom->v;
@@ -187,6 +190,9 @@ void AngleCellMembrane::coeff(int narg, char **arg)
     error->all(FLERR, "Angle_coeff cell/membrane: wall thickness t0 must be > 0, got {}", arg[2]);
   if (!(gamma_one >= 0.0) || !std::isfinite(gamma_one))
     error->all(FLERR, "Angle_coeff cell/membrane: damping gamma must be >= 0, got {}", arg[3]);
+  CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "G", G_one);
+  CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "t0", t0_one);
+  CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "gamma", gamma_one);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
