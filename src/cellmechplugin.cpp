@@ -19,6 +19,7 @@
 #include "compute_cell_contacts.h"
 #include "compute_cell_props.h"
 #include "compute_cell_shear_atom.h"
+#include "dihedral_cell_bending.h"
 #include "fix_cell_fluid.h"
 #include "fix_cell_lamella_break.h"
 #include "fix_cell_tether_break.h"
@@ -62,7 +63,8 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   plugin.author = "cellmech developers";
   plugin.handle = handle;
 
-  // pair, bond, angle: constructed from LAMMPS alone (v1); fix, compute: with their arguments (v2)
+  // pair, bond, angle, dihedral: constructed from LAMMPS alone (v1); fix, compute: with their
+  // arguments (v2)
   struct {
     const char *style, *name, *info;
     lammpsplugin_factory1 *v1;
@@ -70,6 +72,8 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
   } styles[] = {
       {"angle", "cell/membrane", "cellmech Neo-Hookean membrane element on each wall triangle",
        &create<Angle, AngleCellMembrane>, nullptr},
+      {"dihedral", "cell/bending", "cellmech bending stiffness of the wall: a hinge per wall edge",
+       &create<Dihedral, DihedralCellBending>, nullptr},
       {"bond", "cell/tether", "cellmech Neo-Hookean cell wall tether",
        &create<Bond, BondCellTether>, nullptr},
       {"bond", "cell/lamella", "cellmech middle lamella: cohesive bond between cells",

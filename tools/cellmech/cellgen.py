@@ -19,6 +19,9 @@ unless --units si is given (m, kg, s).
 
 Atom types: 1 = wall, 2 = fluid. Bond type 1 = tether. Angle type 1 = triangle. One molecule ID
 per cell (1, 2, ...). atom_style molecular: id mol type x y z.
+--bending (cell, sheet, tissue) adds dihedral type 1 = hinge: one LAMMPS dihedral i-j-k-l per edge
+shared by two wall triangles, j-k the shared edge, (i, j, k) and (l, k, j) the two triangles in the
+orientation of their angles (dihedral style cell/bending); without it the file has no dihedrals.
 
 Usage:
   cellgen.py cell -o cell.data [--level 4] [--radius 30] [--nfluid 3500 | --spacing S | --nfluid 0]
@@ -208,20 +211,40 @@ def fluid_by_count(radius, nfluid, inset):
 # ---------------------------------------------------------------------------------- data file
 
 
+def hinges(angles):
+    """Bending hinges of triangles (a, b, c): (i, j, k, l) for every edge j-k shared by two of them,
+    with (i, j, k) and (l, k, j) the two triangles as they are oriented in `angles`. Each triangle
+    runs its edges a->b, b->c, c->a; a consistently oriented mesh runs a shared edge once each way,
+    so each edge gives one hinge, taken from its direction j < k. Boundary edges give none."""
+    opposite = {}
+    for a, b, c in angles:
+        for u, v, w in ((a, b, c), (b, c, a), (c, a, b)):
+            if (u, v) in opposite:
+                raise ValueError(f"triangles not consistently oriented: edge {u + 1}-{v + 1} twice")
+            opposite[(u, v)] = w
+    return [(i, j, k, opposite[(k, j)]) for (j, k), i in opposite.items()
+            if j < k and (k, j) in opposite]
+
+
 def write_data(path, title, box, atoms, bonds, angles, masses, refs, rho, bond_types=None,
-               rmass=None, alam=None):
+               rmass=None, alam=None, bending=False):
     """atoms: list of (mol, type, x, y, z); bonds/angles 0-based atom indices; rho per atom.
 
     The `cell` section (named like the fix, as write_data names it) holds, per atom, the values of
       fix ID all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
     in that order: mass, density, density rate (0), reference position.
     Tissues: bond_types = (number of bond types, type of each bond), rmass = per-atom masses
-    (default: the type's mass), alam = per-atom lamella area, written as a last column d_alam."""
+    (default: the type's mass), alam = per-atom lamella area, written as a last column d_alam.
+    bending: also the hinges of the triangles as dihedrals of type 1 (hinges())."""
     nbt, btype = bond_types if bond_types is not None else (1, [1] * len(bonds))
+    dihedrals = hinges(angles) if bending else []
     with open(path, "w") as f:
         f.write(f"# {title}\n\n")
         f.write(f"{len(atoms)} atoms\n{len(bonds)} bonds\n{len(angles)} angles\n")
-        f.write(f"{len(masses)} atom types\n{nbt} bond types\n1 angle types\n\n")
+        if bending:
+            f.write(f"{len(dihedrals)} dihedrals\n")
+        f.write(f"{len(masses)} atom types\n{nbt} bond types\n1 angle types\n")
+        f.write("1 dihedral types\n\n" if bending else "\n")
         f.write(f"{box[0]:.10g} {box[1]:.10g} xlo xhi\n{box[2]:.10g} {box[3]:.10g} ylo yhi\n")
         f.write(f"{box[4]:.10g} {box[5]:.10g} zlo zhi\n\nMasses\n\n")
         for i, m in enumerate(masses, 1):
@@ -237,6 +260,10 @@ def write_data(path, title, box, atoms, bonds, angles, masses, refs, rho, bond_t
             f.write("\nAngles\n\n")
             for k, (a, b, c) in enumerate(angles, 1):
                 f.write(f"{k} 1 {a + 1} {b + 1} {c + 1}\n")
+        if len(dihedrals):
+            f.write("\nDihedrals\n\n")
+            for k, (i, j, kk, l) in enumerate(dihedrals, 1):
+                f.write(f"{k} 1 {i + 1} {j + 1} {kk + 1} {l + 1}\n")
         f.write("\ncell # rmass d_rho d_drho d2_cellref[1] d2_cellref[2] d2_cellref[3]"
                 + (" d_alam" if alam is not None else "") + "\n\n")
         for i, ((mol, typ, *_), (x, y, z), r) in enumerate(zip(atoms, refs, rho), 1):
@@ -328,7 +355,8 @@ def build_cells(args):
              f"{nf} fluid per cell, R {R:g}, spacing {spacing:.10g}, rho0 {rho0:g}, "
              f"wall mass {wall_mass:.6g}, units {args.units}")
     rho = [rho0 if a[1] == 2 else 0.0 for a in atoms]
-    write_data(args.output, title, box, atoms, bonds, angles, [m_wall, m_fluid], refs, rho)
+    write_data(args.output, title, box, atoms, bonds, angles, [m_wall, m_fluid], refs, rho,
+               bending=args.bending)
     print(title)
     print(f"wall node mass {m_wall:.6g}, fluid particle mass {m_fluid:.6g}, "
           f"mesh area {area:.6g}, mesh volume {volume:.6g}, mean tether {mean_edge:.6g}")
@@ -374,7 +402,8 @@ def build_sheet(args):
     box = [lo[0] - L, hi[0] + L, lo[1] - L, hi[1] + L, -L, L]
     atoms = [(1, 1, *p) for p in pts]
     title = f"cellgen sheet: {args.nx}x{args.ny} nodes, bond {a:g}, bonds along {args.orient}"
-    write_data(args.output, title, box, atoms, bonds, tris, [m], pts, [0.0] * len(atoms))
+    write_data(args.output, title, box, atoms, bonds, tris, [m], pts, [0.0] * len(atoms),
+               bending=args.bending)
     print(title, f"{len(bonds)} tethers, {len(tris)} triangles, node mass {m:.6g}")
 
 
@@ -808,7 +837,7 @@ def build_tissue(args):
              f"{areal:.6g}, {len(lam) if glue else 0} lamella bonds; read_data ... "
              f"extra/special/per/atom {K}; pair_style cell/virtual reach >= {reach:g}; units micro")
     write_data(args.output, title, box, atoms, bonds, angles, [m_wall, m_fluid], pts, rho,
-               bond_types=(2, btype), rmass=rmass, alam=alam_atom)
+               bond_types=(2, btype), rmass=rmass, alam=alam_atom, bending=args.bending)
     # ---- statistics
     nfl = np.array([len(f) for f in fluid])
     qual = dict(min_angle_deg=float(ang.min()), min_edge=float(elen.min()), max_edge=float(elen.max()),
@@ -919,6 +948,9 @@ def main(argv=None):
                    help="wall mass per area (1.3e4/(4 pi 30^2))")
     t.add_argument("--pad", type=number(minimum=0), default=10.0, help="box padding around the atoms (10 um)")
     t.add_argument("--stats", type=output_file, help="statistics JSON (default: output name with .json)")
+    for sp in (c, s, t):
+        sp.add_argument("--bending", action="store_true",
+                        help="also write the bending hinges (Dihedrals) for dihedral style cell/bending")
     args = p.parse_args(argv)
     {"cell": build_cells, "sheet": build_sheet, "tissue": build_tissue}[args.what](args)
 

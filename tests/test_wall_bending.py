@@ -1,0 +1,251 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Dihedral style cell/bending (the wall's bending stiffness, Eqs. B1-B3) inside LAMMPS; one hinge
+against its closed form and the forces against the energy's finite-difference gradient are in
+tests/unit/test_physics.cpp (BendingHinge).
+
+1. Walls at rest store no bending energy, whatever their curvature: a level-3 cell and a two-cell
+   tissue from cellgen --bending give zero energy and force (the hinges bend against their rest
+   angles from d2_cellref), also after a uniform scaling (dihedral angles do not change).
+2. Cylinder (analytic plate result): a flat sheet (rest shape flat) bent onto a cylinder of radius
+   R, arc lengths kept, stores D / (2 R^2) per area, D = G t0^3 / 3 (E = 3G, nu = 1/2). Every node
+   away from the sheet's edges is equivalent (the lattice's translations are the cylinder's
+   rotations and axial shifts), so the energy of the central node (compute pe/atom: a quarter of
+   each hinge it belongs to) over its area sqrt3/2 a^2 is the mesh's energy per area. Edge length a
+   = R/4, R/8, R/16, bent across and along the bond rows: the error must fall with the observed
+   order p = log2(e(a) / e(a/2)) near 2 (asserted 1.8..2.2, the hinge being a second-order
+   difference of the normals), and the finest error must be within 1.5 times what that order
+   predicts from the coarser ones (no stagnation, no offset the refinement does not remove).
+   The virial: the hinge energy does not change when the wall is scaled, so sum x.f = 0 (to
+   round-off of sum |x.f|), and the per-atom virials (compute stress/atom) sum to the global one.
+3. nve with hinges alone (a perturbed level-2 wall): energy conserved to O(dt^2), the error ratio
+   for dt halved 3..5; a force that is not the energy's gradient would not converge.
+4. 1 vs 2 ranks give the same wall, and a restart in the middle continues it exactly.
+5. Bad input: negative modulus, too few arguments, no reference positions and a collapsed hinge
+   each stop with an error naming the command.
+"""
+import math
+import os
+
+import numpy as np
+
+import lmptest as T
+
+G, T0 = 8.0e5, 0.126
+D = G * T0 ** 3 / 3.0
+
+SETUP = """
+units           micro
+atom_style      molecular
+atom_modify     map array
+boundary        f f f
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3{alam} ghost yes
+read_data       {data} fix cell NULL cell{extra}
+bond_style      zero
+bond_coeff      *
+angle_style     zero
+angle_coeff     *
+dihedral_style  cell/bending
+dihedral_coeff  1 {G} {t0}
+pair_style      zero 1.0
+pair_coeff      * *
+special_bonds   lj 0 1 1
+comm_modify     vel yes cutoff {cut}
+neighbor        0.5 nsq
+neigh_modify    every 1 delay 0 check yes
+timestep        {dt}
+variable        fa atom sqrt(fx*fx+fy*fy+fz*fz)
+compute         fmax all reduce max v_fa
+variable        fmax equal c_fmax
+"""
+
+
+def setup(data, G=G, t0=T0, cut=20.0, dt=0.001):
+    # a tissue's data file also holds the lamella areas and needs room for more special neighbours
+    tissue = data.startswith("tissue")
+    return SETUP.format(data=data, G=G, t0=t0, cut=cut, dt=dt, alam=" d_alam" if tissue else "",
+                        extra=" extra/special/per/atom 50" if tissue else "")
+
+
+def last(log, tag):
+    return [l for l in log.splitlines() if l.startswith(tag)][-1].split()
+
+
+def at_rest(d):
+    T.cellgen("cell", "-o", "cell3.data", "--level", 3, "--nfluid", 0, "--bending", cwd=d)
+    T.cellgen("tissue", "-o", "tissue.data", "--lattice", "sc", "--n", 2, 1, 1, "--level", 2,
+              "--nfluid", 4, "--bending", cwd=d)
+    for data, cut in (("cell3.data", 20.0), ("tissue.data", 40.0)):
+        for lam in (1.0, 0.9):
+            inp = setup(data, cut=cut) + f"""
+variable        sx atom {lam}*x
+variable        sy atom {lam}*y
+variable        sz atom {lam}*z
+set             group all x v_sx y v_sy z v_sz
+thermo_style    custom step edihed v_fmax
+run             0
+print           "REST $(edihed:%.17g) $(v_fmax:%.17g) $(dihedrals)"
+"""
+            _, log = T.lmp(inp, cwd=d, log=f"log.rest-{data}-{lam}")
+            w = last(log, "REST")
+            E, fmax, nh = float(w[1]), float(w[2]), int(w[3])
+            # the scale of the forces a unit bend of every hinge would give: D / edge
+            print(f"{data} scaled by {lam}: {nh} hinges, bending energy {E:.3g}, largest force "
+                  f"{fmax:.3g} (D = {D:.6g} pg um^2/us^2)")
+            T.check(f"{data} x {lam}: no bending energy at rest", abs(E) < 1e-20 * D * nh, f"{E:.3g}")
+            T.check(f"{data} x {lam}: no force at rest", fmax < 1e-9 * D, f"{fmax:.3g}")
+
+
+def cylinder(d):
+    R, n = 20.0, 9
+    centre = (n // 2) * (n + 1)    # node (4, 4) of the 9x9 sheet, 1-based id below
+    err = {}
+    for axis in ("x", "y"):
+        for k, a in enumerate((R / 4, R / 8, R / 16)):
+            data = f"sheet{k}.data"
+            T.cellgen("sheet", "-o", data, "--nx", n, "--ny", n, "--bond", a, "--bending", cwd=d)
+            node = (n // 2) * n + n // 2 + 1
+            # bend the coordinate u (x or y) onto the cylinder of radius R about an axis through
+            # the centre node, keeping arc lengths: u -> uc + R sin(s/R), z -> R (1 - cos(s/R))
+            u = "x" if axis == "y" else "y"
+            inp = setup(data, cut=4.0 * a) + f"""
+variable        uc equal {u}[{node}]
+variable        su atom v_uc+{R}*sin(({u}-v_uc)/{R})
+variable        sz atom {R}*(1-cos(({u}-v_uc)/{R}))
+set             group all {u} v_su z v_sz
+compute         pe all pe/atom dihedral
+compute         st all stress/atom NULL dihedral
+compute         sst all reduce sum c_st[1] c_st[2] c_st[3] c_st[4] c_st[5] c_st[6]
+compute         vir all pressure NULL dihedral
+variable        e1 equal C_pe[{node}]
+variable        xf equal (c_vir[1]+c_vir[2]+c_vir[3])*vol
+variable        sxf equal -(c_sst[1]+c_sst[2]+c_sst[3])
+variable        dvir equal abs(c_vir[1]*vol+c_sst[1])+abs(c_vir[2]*vol+c_sst[2])+abs(c_vir[3]*vol+c_sst[3])+abs(c_vir[4]*vol+c_sst[4])+abs(c_vir[5]*vol+c_sst[5])+abs(c_vir[6]*vol+c_sst[6])
+variable        vabs equal abs(c_vir[1]*vol)+abs(c_vir[2]*vol)+abs(c_vir[3]*vol)
+thermo_style    custom step edihed v_e1 v_xf
+run             0
+print           "CYL $(edihed:%.17g) $(v_e1:%.17g) $(v_xf:%.17g) $(v_dvir:%.17g) $(v_vabs:%.17g)"
+"""
+            _, log = T.lmp(inp, cwd=d, log=f"log.cyl-{axis}{k}")
+            w = last(log, "CYL")
+            E, e1, xf, dvir, vabs = (float(v) for v in w[1:6])
+            dens = e1 / (math.sqrt(3.0) / 2.0 * a * a)
+            exact = D / (2.0 * R * R)
+            err[(axis, k)] = dens / exact - 1.0
+            print(f"axis {axis}, a = R/{R / a:g}: energy per area at the centre {dens:.10g} "
+                  f"(D/(2R^2) = {exact:.10g}, rel. error {err[(axis, k)]:+.4e}); whole sheet "
+                  f"{E:.6g}; trace of the virial {xf:.3g} of sum |W_aa| {vabs:.3g}, "
+                  f"per-atom vs global virial {dvir:.3g}")
+            T.check(f"axis {axis}, a = R/{R / a:g}: the bent sheet's virial trace vanishes",
+                    abs(xf) < 1e-10 * vabs, f"{xf:.3g} of {vabs:.3g}")
+            T.check(f"axis {axis}, a = R/{R / a:g}: per-atom virials sum to the global one",
+                    dvir < 1e-10 * vabs, f"{dvir:.3g}")
+        e = [abs(err[(axis, k)]) for k in range(3)]
+        p1, p2 = math.log2(e[0] / e[1]), math.log2(e[1] / e[2])
+        predicted = e[1] * 2.0 ** -p1
+        print(f"axis {axis}: errors {e[0]:.3e}, {e[1]:.3e}, {e[2]:.3e}; observed order "
+              f"{p1:.3f}, {p2:.3f}; finest error {e[2]:.3e} vs {predicted:.3e} predicted")
+        T.check(f"axis {axis}: second-order convergence to D/(2R^2)", 1.8 < p1 < 2.2 and 1.8 < p2 < 2.2,
+                f"orders {p1:.3f} {p2:.3f}")
+        T.check(f"axis {axis}: the finest error is what the order predicts", e[2] < 1.5 * predicted,
+                f"{e[2]:.3e} vs {predicted:.3e}")
+
+
+def dynamics(d):
+    T.cellgen("cell", "-o", "cell2.data", "--level", 2, "--nfluid", 0, "--bending", cwd=d)
+    # a stiff plate (t0 = 1 um) so that the hinges alone oscillate within the run
+    drift, swing = {}, {}
+    for dt, nsteps in ((0.004, 1000), (0.002, 2000)):
+        inp = setup("cell2.data", t0=1.0, dt=dt) + f"""
+displace_atoms  all random 0.3 0.3 0.3 8123 units box
+fix             nve all nve
+variable        etot equal ke+edihed
+variable        eb equal edihed
+thermo_style    custom step ke edihed v_etot
+thermo          {nsteps // 10}
+fix             rec all ave/time {nsteps // 100} 1 {nsteps // 100} v_etot v_eb file energy{dt}.dat &
+                format " %.17g"
+run             {nsteps}
+"""
+        T.lmp(inp, cwd=d, log=f"log.nve{dt}")
+        e = T.load(os.path.join(d, f"energy{dt}.dat"))
+        drift[dt] = np.abs(e[:, 1] - e[0, 1]).max() / e[0, 2]
+        swing[dt] = e[:, 2].min() / e[0, 2]
+        print(f"dt {dt} us, {nsteps} steps: largest |E - E0| / E_bend(0) = {drift[dt]:.3e} "
+              f"(E_bend(0) = {e[0, 2]:.6g}, smallest E_bend {e[:, 2].min():.6g})")
+    ratio = drift[0.004] / drift[0.002]
+    print(f"error ratio for dt halved: {ratio:.2f} (second order: 4)")
+    # conservation means something only if the hinges trade their energy with the motion
+    T.check("the hinges give up most of their energy to the motion", swing[0.004] < 0.5,
+            f"smallest E_bend / E_bend(0) {swing[0.004]:.3f}")
+    T.check("nve conserves the bent wall's energy", drift[0.004] < 1e-2, f"{drift[0.004]:.1e}")
+    T.check("the energy error is second order in dt", 3.0 < ratio < 5.0, f"{ratio:.2f}")
+
+    run = setup("cell2.data", t0=1.0, dt=0.004) + """
+displace_atoms  all random 0.3 0.3 0.3 8123 units box
+fix             nve all nve
+run             300
+write_restart   mid.restart
+run             300
+write_dump      all custom {out} id x y z vx vy vz modify sort id format float %.17g
+"""
+    T.lmp(run.format(out="np1.dump"), cwd=d, log="log.np1")
+    T.lmp(run.format(out="np2.dump"), cwd=d, log="log.np2", nprocs=2)
+    cont = """
+units           micro
+read_restart    mid.restart
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+comm_modify     vel yes cutoff 20.0
+neighbor        0.5 nsq
+neigh_modify    every 1 delay 0 check yes
+pair_coeff      * *
+fix             nve all nve
+run             300
+write_dump      all custom restart.dump id x y z vx vy vz modify sort id format float %.17g
+"""
+    T.lmp(cont, cwd=d, log="log.restart")
+    dumps = {k: np.loadtxt(os.path.join(d, f"{k}.dump"), skiprows=9) for k in ("np1", "np2", "restart")}
+    size = np.ptp(dumps["np1"][:, 1:4], axis=0).max()
+    moved = np.abs(dumps["np1"][:, 1:4]).max()
+    d12 = np.abs(dumps["np1"][:, 1:4] - dumps["np2"][:, 1:4]).max() / size
+    dre = np.abs(dumps["np1"][:, 1:4] - dumps["restart"][:, 1:4]).max() / size
+    print(f"after 600 steps: 1 vs 2 ranks differ by {d12:.1e}, restart vs straight by {dre:.1e} "
+          f"(of the wall size {size:.2f} um)")
+    T.check("1 and 2 ranks give the same wall", d12 < 1e-9, f"{d12:.1e}")
+    T.check("a restart continues the run", dre < 1e-9, f"{dre:.1e}")
+
+
+def bad_input(d):
+    base = setup("cell2.data")
+    # the first hinge i-j-k-l of the data file, its node i moved onto the middle of its edge j-k
+    text = open(os.path.join(d, "cell2.data")).read().split("Dihedrals")[1].split("\n")
+    i, j, k = [int(v) for v in next(l for l in text if l.strip()).split()[2:5]]
+    collapse = (f"set atom {i} x $((x[{j}]+x[{k}])/2) y $((y[{j}]+y[{k}])/2) "
+                f"z $((z[{j}]+z[{k}])/2)\nrun 0\n")
+    bad = {
+        "negative modulus": (base.replace(f"dihedral_coeff  1 {G} {T0}", "dihedral_coeff  1 -1 0.126"),
+                             "shear modulus G must be > 0"),
+        "too few arguments": (base.replace(f"dihedral_coeff  1 {G} {T0}", "dihedral_coeff  1 8e5"),
+                              "expected 'dihedral_coeff N G t0'"),
+        "no reference positions": (base.replace("d2_cellref 3", "d2_elsewhere 3") + "run 0\n",
+                                   "requires the wall reference positions"),
+        "collapsed hinge": (base + collapse, "has collapsed"),
+    }
+    for name, (inp, expect) in bad.items():
+        rc, log = T.lmp(inp, cwd=d, log=f"log.bad-{name.replace(' ', '_')}", check=False)
+        msg = [l for l in log.splitlines() if "ERROR" in l]
+        print(f"{name}: rc {rc}, {msg[-1] if msg else 'no error'}")
+        T.check(f"bad input ({name}) is refused with a clear error",
+                rc != 0 and any(expect in l for l in msg), msg[-1] if msg else "no error")
+
+
+def main():
+    d = T.workdir("wall_bending")
+    at_rest(d)
+    cylinder(d)
+    dynamics(d)
+    bad_input(d)
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()
