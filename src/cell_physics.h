@@ -239,6 +239,45 @@ inline double osmotic_mass_step(double k, double dt, double P, double Pi, double
 }
 
 /* ---------------------------------------------------------------------
+   Water in a tissue (fix cell/fluid options solute, exchange, external;
+   not in the paper, which has one cell in pure water: docs/fix_cell_fluid.rst)
+------------------------------------------------------------------------ */
+
+// Solutes kept in their cell (Eq. W1, Boyle-van 't Hoff): the osmotic potential is proportional to
+// the solute concentration, so Pi W = Pi0 W0 with W the cell's water (fluid) mass.
+inline double solute_osmotic_potential(double Pi0, double W0, double W)
+{
+  return Pi0 * W0 / W;
+}
+
+// Conductivity of the wall two cells share (Eq. W2): water crosses both cells' walls in series,
+// 1/Lp = 1/Lp_a + 1/Lp_b; zero when either wall is closed to water.
+inline double series_conductivity(double Lp_a, double Lp_b)
+{
+  return (Lp_a > 0.0 && Lp_b > 0.0) ? Lp_a * Lp_b / (Lp_a + Lp_b) : 0.0;
+}
+
+// Mass that cell a gives cell b in one step dt (Eq. W3): dM_b/dt = -dM_a/dt = k (psi_a - psi_b),
+// k = A_ab Lp_ab rho, psi = P + Pi the water potentials, linearised in the step's own effect on
+// them as osmotic_mass_step is (dpsi/dM of each cell, > 0: a cell's potential rises as it gains
+// water), so that a large k dt brings the two potentials together without overshoot.
+inline double exchange_mass_step(double k, double dt, double psi_a, double psi_b, double dpsi_dM_a,
+                                 double dpsi_dM_b)
+{
+  return k * dt * (psi_a - psi_b) / (1.0 + k * dt * (dpsi_dM_a + dpsi_dM_b));
+}
+
+// Wall area of a cell open to the outside (Eq. W4): the current area A less the glued part, whose
+// rest area A_glued_ref (the lamella areas d_alam) is scaled by the wall's areal stretch A / A_ref
+// (A_ref the rest area of its triangles); never below zero.
+inline double exposed_area(double A, double A_ref, double A_glued_ref)
+{
+  if (A_ref <= 0.0) return A;
+  const double open = 1.0 - A_glued_ref / A_ref;
+  return open > 0.0 ? A * open : 0.0;
+}
+
+/* ---------------------------------------------------------------------
    Triangulated closed surfaces
 ------------------------------------------------------------------------ */
 

@@ -20,11 +20,23 @@
    the pressure (osmotic_mass_step in cell_physics.h), stable for the large
    Lp that inflate a cell. Under run_style respa they advance on the
    outermost level, with the SPH forces.
+
+   Options for tissues (not in the paper, which has one cell in pure water;
+   docs/fix_cell_fluid.rst): Pi and Lp per cell; solutes kept in their cell,
+   Pi W = Pi0 W0 (Eq. W1); water exchanged between glued cells through
+   their shared wall, k (psi_a - psi_b) with psi = P + Pi (Eqs. W2-W3),
+   one mass per pair added to one cell and taken from the other so that
+   the exchange conserves mass to round-off; and the outside reached only
+   through the exposed (not glued) wall (Eq. W4), at a water potential
+   psi_ext or at a set flux. Each cell's share is spread evenly over its
+   fluid particles, as Eq. 10's A_c / N_f does.
 ------------------------------------------------------------------------- */
 
 #include "fix_cell_fluid.h"
 
 #include "cell_compat.h"
+
+#include "cell_fields.h"
 
 #include "atom.h"
 #include "cell_checks.h"
@@ -44,24 +56,37 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 using namespace CellPhysics;
 
+namespace {
+enum { EXT_PSI, EXT_FLUX };
+constexpr int NCOLS = 7;    // compute_array columns
+// restart tag of the format (tag, ncells, then ID, uptake, W0 per cell): not an integer, so it
+// cannot be mistaken for the cell count that opens the two earlier formats
+constexpr double RESTART_TAG = -0.5;
+}    // namespace
+
 /* ----------------------------------------------------------------------
-   fix ID group cell/fluid Pi value Lp value
+   fix ID group cell/fluid Pi value Lp value [keyword args ...]
+     cell M Pi value Lp value | cells file | solute yes/no | exchange yes/no
+     | external psi value | external flux value
 ------------------------------------------------------------------------- */
 
 FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
-    Fix(_lmp, narg, arg), Pi(0.0), Lp(0.0), dt(0.0), ilevel_respa(0), ncells(0), area(nullptr),
-    nfluid(nullptr), nbroken(nullptr), flux_local(nullptr), flux_all(nullptr), flux_stale(1),
-    sph(nullptr)
+    Fix(_lmp, narg, arg), Pi(0.0), Lp(0.0), solute(0), exchange(0), external(EXT_PSI),
+    ext_value(0.0), dt(0.0), ilevel_respa(0), ncells(0), area(nullptr), nfluid(nullptr),
+    nbroken(nullptr), flux_local(nullptr), flux_all(nullptr), flux_stale(1), sph(nullptr), iref(-1),
+    ialam(-1)
 {
-  if (narg != 7)
+  if (narg < 7)
     error->all(FLERR,
                "Illegal fix cell/fluid command: expected 'fix ID group cell/fluid Pi value Lp "
-               "value', got {} arguments after the group",
+               "value [keyword args ...]', got {} arguments after the group",
                narg - 3);
   // both keywords, in either order, each once
   if (strcmp(arg[3], arg[5]) == 0)
@@ -69,8 +94,15 @@ FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
                "Illegal fix cell/fluid command: keyword '{}' given twice; expected 'Pi value Lp "
                "value' (in either order)",
                arg[3]);
-  modify_param(2, &arg[3]);
-  modify_param(2, &arg[5]);
+  if ((strcmp(arg[3], "Pi") != 0 && strcmp(arg[3], "Lp") != 0) ||
+      (strcmp(arg[5], "Pi") != 0 && strcmp(arg[5], "Lp") != 0))
+    error->all(FLERR,
+               "Illegal fix cell/fluid command: expected 'Pi value Lp value' (in either order) "
+               "first, got '{} {} {} {}'",
+               arg[3], arg[4], arg[5], arg[6]);
+  parse_keyword(2, &arg[3]);
+  parse_keyword(2, &arg[5]);
+  for (int iarg = 7; iarg < narg;) iarg += parse_keyword(narg - iarg, &arg[iarg]);
   if (!atom->molecule_flag)
     error->all(FLERR,
                "Fix cell/fluid requires molecule IDs (one per cell): use atom_style molecular");
@@ -81,6 +113,10 @@ FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
   global_freq = 1;
   restart_global = 1;
   size_vector = 0;
+  array_flag = 1;
+  size_array_cols = NCOLS;
+  size_array_rows = 0;
+  extarray = 0;
 }
 
 FixCellFluid::~FixCellFluid()
@@ -98,28 +134,139 @@ int FixCellFluid::setmask()
 }
 
 /* ----------------------------------------------------------------------
-   fix_modify ID Pi value Lp value: change the osmotic potential or the
-   hydraulic conductivity between runs (inflation with a large Lp first)
+   fix_modify ID keyword args: the fix's keywords, between runs (inflation
+   with a large Lp first, then a drying series of external psi values)
 ------------------------------------------------------------------------- */
 
 int FixCellFluid::modify_param(int narg, char **arg)
 {
-  // one keyword-value pair per call: LAMMPS's fix_modify passes what it does not know itself
-  if (narg < 2) error->all(FLERR, "fix cell/fluid: keyword '{}' needs a value", arg[0]);
-  if (strcmp(arg[0], "Pi") == 0) {
-    Pi = utils::numeric(FLERR, arg[1], false, lmp);
-    if (Pi > 0.0)
+  // one keyword per call: LAMMPS's fix_modify passes what it does not know itself
+  return parse_keyword(narg, arg);
+}
+
+namespace {
+double osmotic_value(LAMMPS *lmp, const char *text, const std::string &what)
+{
+  const double Pi = utils::numeric(FLERR, text, false, lmp);
+  if (Pi > 0.0)
+    lmp->error->all(FLERR,
+                    "fix cell/fluid: osmotic potential Pi{} must be <= 0 (water potential), got {}",
+                    what, Pi);
+  CellMech::require_magnitude(lmp, "fix cell/fluid", "osmotic potential Pi", Pi);
+  return Pi;
+}
+
+double conductivity_value(LAMMPS *lmp, const char *text, const std::string &what)
+{
+  const double Lp = utils::numeric(FLERR, text, false, lmp);
+  if (Lp < 0.0)
+    lmp->error->all(FLERR, "fix cell/fluid: hydraulic conductivity Lp{} must be >= 0, got {}", what,
+                    Lp);
+  CellMech::require_magnitude(lmp, "fix cell/fluid", "hydraulic conductivity Lp", Lp);
+  return Lp;
+}
+
+tagint cell_id(LAMMPS *lmp, const char *text, const std::string &where)
+{
+  const tagint m = utils::tnumeric(FLERR, text, false, lmp);
+  if (m < 1)
+    lmp->error->all(FLERR, "fix cell/fluid {}: the cell (molecule ID) must be >= 1, got {}", where,
+                    text);
+  return m;
+}
+}    // namespace
+
+// one keyword and its arguments; returns how many words it took
+int FixCellFluid::parse_keyword(int narg, char **arg)
+{
+  const std::string key = arg[0];
+  auto need = [&](int n, const char *form) {
+    if (narg < n)
+      error->all(FLERR, "fix cell/fluid: keyword '{}' needs {} argument(s): '{}', got {}", key,
+                 n - 1, form, narg - 1);
+  };
+  if (key == "Pi") {
+    need(2, "Pi value");
+    Pi = osmotic_value(lmp, arg[1], "");
+    return 2;
+  }
+  if (key == "Lp") {
+    need(2, "Lp value");
+    Lp = conductivity_value(lmp, arg[1], "");
+    return 2;
+  }
+  if (key == "cell") {
+    // cell M followed by Pi value and/or Lp value: unset ones stay the fix's own
+    need(4, "cell M Pi value Lp value");
+    const tagint m = cell_id(lmp, arg[1], "cell");
+    const std::string what = fmt::format(" of cell {}", m);
+    auto it = percell.find(m);
+    std::pair<double, double> v = it == percell.end() ? std::make_pair(double(NAN), double(NAN))
+                                                      : it->second;
+    int n = 2;
+    while (n + 1 < narg && (strcmp(arg[n], "Pi") == 0 || strcmp(arg[n], "Lp") == 0)) {
+      if (arg[n][0] == 'P')
+        v.first = osmotic_value(lmp, arg[n + 1], what);
+      else
+        v.second = conductivity_value(lmp, arg[n + 1], what);
+      n += 2;
+    }
+    if (n == 2)
       error->all(FLERR,
-                 "fix cell/fluid: osmotic potential Pi must be <= 0 (water potential), got {}", Pi);
-    CellMech::require_magnitude(lmp, "fix cell/fluid", "osmotic potential Pi", Pi);
-  } else if (strcmp(arg[0], "Lp") == 0) {
-    Lp = utils::numeric(FLERR, arg[1], false, lmp);
-    if (Lp < 0.0)
-      error->all(FLERR, "fix cell/fluid: hydraulic conductivity Lp must be >= 0, got {}", Lp);
-    CellMech::require_magnitude(lmp, "fix cell/fluid", "hydraulic conductivity Lp", Lp);
-  } else
-    error->all(FLERR, "Unknown keyword '{}' for fix cell/fluid: expected 'Pi' or 'Lp'", arg[0]);
-  return 2;
+                 "fix cell/fluid: keyword 'cell {}' expects 'Pi value' and/or 'Lp value', got '{}'",
+                 arg[1], arg[2]);
+    percell[m] = v;
+    return n;
+  }
+  if (key == "cells") {
+    // a file of lines 'M Pi Lp' (molecule ID, osmotic potential, conductivity); # starts a comment
+    need(2, "cells file");
+    std::ifstream in(arg[1]);
+    if (!in)
+      error->all(FLERR, "fix cell/fluid cells: cannot open file '{}': {}", arg[1],
+                 utils::getsyserror());
+    std::string line;
+    int lineno = 0;
+    while (std::getline(in, line)) {
+      lineno++;
+      line = utils::trim_comment(line);
+      auto words = utils::split_words(line);
+      if (words.empty()) continue;
+      const std::string where = fmt::format("cells file '{}' line {}", arg[1], lineno);
+      if (words.size() != 3)
+        error->all(FLERR, "fix cell/fluid {}: expected 'M Pi Lp' (3 numbers), got '{}'", where,
+                   line);
+      const std::string what = fmt::format(" in {}", where);
+      const tagint m = cell_id(lmp, words[0].c_str(), where);
+      percell[m] = {osmotic_value(lmp, words[1].c_str(), what),
+                    conductivity_value(lmp, words[2].c_str(), what)};
+    }
+    return 2;
+  }
+  if (key == "solute" || key == "exchange") {
+    need(2, (key + " yes/no").c_str());
+    (key == "solute" ? solute : exchange) = utils::logical(FLERR, arg[1], false, lmp);
+    return 2;
+  }
+  if (key == "external") {
+    need(3, "external psi value' or 'external flux value");
+    if (strcmp(arg[1], "psi") == 0)
+      external = EXT_PSI;
+    else if (strcmp(arg[1], "flux") == 0)
+      external = EXT_FLUX;
+    else
+      error->all(FLERR, "fix cell/fluid: keyword 'external' expects 'psi' or 'flux', got '{}'",
+                 arg[1]);
+    ext_value = utils::numeric(FLERR, arg[2], false, lmp);
+    if (ext_value != 0.0)
+      CellMech::require_magnitude(lmp, "fix cell/fluid", "external value", ext_value);
+    return 3;
+  }
+  error->all(FLERR,
+             "Unknown keyword '{}' for fix cell/fluid: expected Pi, Lp, cell, cells, solute, "
+             "exchange or external",
+             key);
+  return 0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -135,10 +282,22 @@ void FixCellFluid::init()
   if (!force->newton_bond)
     error->all(FLERR,
                "Fix cell/fluid requires newton_bond on: each wall triangle must be counted once");
-  if (Lp > 0.0 && (!atom->nangles || !force->angle))
+  if (active() && (!atom->nangles || !force->angle))
     error->all(FLERR,
-               "Fix cell/fluid with Lp > 0 needs the wall triangles as angles and an angle "
-               "style (angle_style zero nocoeff) to measure the cell area");
+               "Fix cell/fluid with Lp > 0 or an external flux needs the wall triangles as angles "
+               "and an angle style (angle_style zero nocoeff) to measure the cell area");
+  int flag, cols;
+  iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
+  if (iref >= 0 && (flag != 1 || cols != 3)) iref = -1;
+  ialam = atom->find_custom(CellMech::AREA_FIELD, flag, cols);
+  if (ialam >= 0 && (flag != 1 || cols != 0)) ialam = -1;
+  // the shared wall is the lamella's area (d_alam) on the rest shape (d2_cellref) of the walls
+  if (exchange && (iref < 0 || ialam < 0))
+    error->all(FLERR,
+               "Fix cell/fluid {} exchange yes needs the per-atom fields d2_cellref (rest shape of "
+               "the walls) and d_alam (lamella area) of fix property/atom, as cellgen.py tissue "
+               "writes them; missing: {}",
+               id, iref < 0 ? (ialam < 0 ? "both" : "d2_cellref") : "d_alam");
   dt = update->dt;
   ilevel_respa = 0;
   if (utils::strmatch(update->integrate_style, "^respa")) {
@@ -194,15 +353,26 @@ void FixCellFluid::index_cells()
 {
   const std::vector<tagint> old = cells.molecule_ids();
   cells.build(lmp);
-  if (cells.molecule_ids() == old && flux_restart.empty() && flux_local) return;
+  if (cells.molecule_ids() == old && flux_restart.empty() && water0_restart.empty() && flux_local)
+    return;
   const int n = cells.size();
-  std::vector<double> flux(n + 1, 0.0);
-  for (int k = 1; k <= (int) old.size(); k++) flux[cells.slot(old[k - 1])] += flux_local[k];
+  std::vector<double> flux(n + 1, 0.0), w0(n + 1, 0.0);
+  for (int k = 1; k <= (int) old.size(); k++) {
+    flux[cells.slot(old[k - 1])] += flux_local[k];
+    w0[cells.slot(old[k - 1])] = water0[k];
+  }
   // the restart's totals were kept on rank 0 only, so they are summed once
   if (comm->me == 0)
     for (const auto &kv : flux_restart) flux[cells.slot(kv.first)] += kv.second;
+  for (const auto &kv : water0_restart) w0[cells.slot(kv.first)] = kv.second;
   flux_restart.clear();
+  water0_restart.clear();
   flux[0] = 0.0;    // slot 0: IDs that left
+  w0[0] = 0.0;
+  water0 = w0;
+  for (auto *v :
+       {&pi0, &lp, &water, &pinow, &psi, &exposed, &glued, &aref, &sump, &sumstiff, &sumrho})
+    v->assign(n + 1, 0.0);
   ncells = n;
   for (double **a : {&area, &nfluid, &nbroken, &flux_local, &flux_all}) {
     memory->destroy(*a);
@@ -210,6 +380,7 @@ void FixCellFluid::index_cells()
   }
   for (int m = 0; m <= ncells; m++) flux_local[m] = flux[m];
   size_vector = ncells;
+  size_array_rows = ncells;
   flux_stale = 1;
 }
 
@@ -224,7 +395,9 @@ void FixCellFluid::cell_geometry()
   tagint *molecule = atom->molecule;
   int *mask = atom->mask;
   const int n1 = ncells + 1;
-  std::vector<double> local(3 * n1, 0.0), all(3 * n1);
+  constexpr int NF = 8;
+  std::vector<double> local(NF * n1, 0.0), all(NF * n1);
+  double **ref = iref >= 0 ? atom->darray[iref] : nullptr;
 
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
@@ -237,11 +410,28 @@ void FixCellFluid::cell_geometry()
     }
     // the cell of the central node (contract: cell_fields.h)
     const int m = cells.slot(molecule[b]);
-    if (m >= 1) local[m] += triangle_area(u, w);
+    if (m < 1) continue;
+    local[m] += triangle_area(u, w);
+    if (ref) {
+      for (int d = 0; d < 3; d++) {
+        u[d] = ref[b][d] - ref[a][d];
+        w[d] = ref[c][d] - ref[a][d];
+      }
+      local[3 * n1 + m] += triangle_area(u, w);
+    }
   }
+  double *rho = sph->rho_array();
+  double *rmass = atom->rmass;
+  int *type = atom->type;
   for (int i = 0; i < atom->nlocal; i++) {
     const int m = cells.slot(molecule[i]);
-    if ((mask[i] & groupbit) && sph->is_fluid(atom->type[i]) && m >= 1) local[n1 + m] += 1.0;
+    if (!(mask[i] & groupbit) || !sph->is_fluid(type[i]) || m < 1) continue;
+    local[n1 + m] += 1.0;
+    local[4 * n1 + m] += rmass[i];
+    local[5 * n1 + m] += sph->pressure(type[i], rho[i]);
+    // dP_i/dM of the cell when a mass dM is spread evenly (N dm_i = dM, Eq. 9 at fixed volume)
+    local[6 * n1 + m] += sph->dpressure_drho(type[i], rho[i]) * rho[i] / rmass[i];
+    local[7 * n1 + m] += rho[i];
   }
   // broken tethers, each counted at both of its nodes by fix CELL_TETHER_BREAK
   auto *broken = modify->get_fix_by_id(FixCellTetherBreak::ID);
@@ -250,12 +440,112 @@ void FixCellFluid::cell_geometry()
       const int m = cells.slot(molecule[i]);
       if (m >= 1) local[2 * n1 + m] += broken->vector_atom[i];
     }
-  MPI_Allreduce(local.data(), all.data(), 3 * n1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(local.data(), all.data(), NF * n1, MPI_DOUBLE, MPI_SUM, world);
   for (int m = 0; m <= ncells; m++) {
     area[m] = all[m];
     nfluid[m] = all[n1 + m];
     nbroken[m] = all[2 * n1 + m];
+    aref[m] = all[3 * n1 + m];
+    water[m] = all[4 * n1 + m];
+    sump[m] = all[5 * n1 + m];
+    sumstiff[m] = all[6 * n1 + m];
+    sumrho[m] = all[7 * n1 + m];
   }
+}
+
+/* ----------------------------------------------------------------------
+   the rest area of the intact lamella bonds between each pair of cells
+   (slots a < b), summed over all ranks: the same list, in the same order,
+   on every rank, so that every rank computes the same exchange
+------------------------------------------------------------------------- */
+
+void FixCellFluid::glued_pairs(std::vector<double> &pairs)
+{
+  std::map<std::pair<int, int>, double> local;
+  const double *alam = atom->dvector[ialam];
+  tagint *molecule = atom->molecule;
+  int **bondlist = neighbor->bondlist;
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
+    if (bondlist[n][2] <= 0 || molecule[i1] == molecule[i2]) continue;    // debonded or a tether
+    const int a = cells.slot(molecule[i1]), b = cells.slot(molecule[i2]);
+    if (a < 1 || b < 1) continue;
+    local[std::make_pair(MIN(a, b), MAX(a, b))] += CellMech::lamella_area(alam, i1, i2);
+  }
+  std::vector<double> mine;
+  for (const auto &kv : local) {
+    mine.push_back(kv.first.first);
+    mine.push_back(kv.first.second);
+    mine.push_back(kv.second);
+  }
+  const int nmine = mine.size();
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<double> gathered(total);
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, gathered.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+  // summed in rank order into an ordered map: the same sums on every rank
+  std::map<std::pair<int, int>, double> all;
+  for (int k = 0; k < total; k += 3)
+    all[std::make_pair((int) gathered[k], (int) gathered[k + 1])] += gathered[k + 2];
+  pairs.clear();
+  for (const auto &kv : all) {
+    pairs.push_back(kv.first.first);
+    pairs.push_back(kv.first.second);
+    pairs.push_back(kv.second);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   per cell: Pi0 and Lp (the fix's or the cell's own), then this step's
+   osmotic potential (Eq. W1), water potential, glued and exposed area
+------------------------------------------------------------------------- */
+
+void FixCellFluid::cell_water()
+{
+  for (int m = 1; m <= ncells; m++) {
+    auto it = percell.find(cells.id(m));
+    pi0[m] = Pi;
+    lp[m] = Lp;
+    if (it != percell.end()) {
+      if (!std::isnan(it->second.first)) pi0[m] = it->second.first;
+      if (!std::isnan(it->second.second)) lp[m] = it->second.second;
+    }
+    pinow[m] = (solute && water0[m] > 0.0 && water[m] > 0.0)
+        ? solute_osmotic_potential(pi0[m], water0[m], water[m])
+        : pi0[m];
+    psi[m] = nfluid[m] > 0 ? sump[m] / nfluid[m] + pinow[m] : pinow[m];
+    glued[m] = 0.0;
+  }
+  pairs.clear();
+  if (exchange) glued_pairs(pairs);
+  for (size_t k = 0; k < pairs.size(); k += 3) {
+    glued[(int) pairs[k]] += pairs[k + 2];
+    glued[(int) pairs[k + 1]] += pairs[k + 2];
+  }
+  for (int m = 1; m <= ncells; m++) exposed[m] = exposed_area(area[m], aref[m], glued[m]);
+}
+
+// water moves through some wall: a conductivity > 0 or a set flux
+bool FixCellFluid::active() const
+{
+  bool any = Lp > 0.0 || (external == EXT_FLUX && ext_value != 0.0);
+  for (const auto &kv : percell) any = any || kv.second.second > 0.0;
+  return any;
+}
+
+// dpsi/dM of cell m, for the linearised exchange step: its pressure and, with the solutes kept,
+// its osmotic potential (dPi/dW = -Pi/W by Eq. W1)
+double FixCellFluid::potential_stiffness(int m) const
+{
+  double s = sumstiff[m] / (nfluid[m] * nfluid[m]);
+  if (solute && water[m] > 0.0) s -= pinow[m] / water[m];
+  return s;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -264,6 +554,20 @@ void FixCellFluid::cell_geometry()
 void FixCellFluid::setup_pre_force(int /*vflag*/)
 {
   index_cells();
+  cell_geometry();
+  cell_water();
+  // W0 of Eq. W1: the water of each cell when the fix first ran (or from the restart file)
+  for (int m = 1; m <= ncells; m++)
+    if (water0[m] == 0.0) water0[m] = water[m];
+  cell_water();
+  for (const auto &kv : percell) {
+    const int m = cells.slot(kv.first);
+    if (m < 1 || nfluid[m] == 0)
+      error->all(FLERR,
+                 "Fix cell/fluid {}: a per-cell setting names cell (molecule ID) {}, which holds "
+                 "no fluid particles of group {}",
+                 id, kv.first, group->names[igroup]);
+  }
 }
 
 void FixCellFluid::pre_force(int /*vflag*/)
@@ -271,8 +575,25 @@ void FixCellFluid::pre_force(int /*vflag*/)
   // atoms change ranks or leave only when LAMMPS re-neighbors
   if (neighbor->ago == 0) index_cells();
   sph->continuity();
-  const bool osmosis = (Lp > 0.0);
-  if (osmosis) cell_geometry();
+  const bool osmosis = active();
+  std::vector<double> uptake(ncells + 1, 0.0);    // per cell: from its neighbours, this step
+  if (osmosis) {
+    cell_geometry();
+    cell_water();
+    for (size_t k = 0; k < pairs.size(); k += 3) {
+      const int a = (int) pairs[k], b = (int) pairs[k + 1];
+      if (nfluid[a] == 0 || nfluid[b] == 0 || nbroken[a] > 0.0 || nbroken[b] > 0.0) continue;
+      const double Lab = series_conductivity(lp[a], lp[b]);
+      if (Lab == 0.0) continue;
+      // the glued rest area at the walls' mean areal stretch; the mean density of the two
+      const double Aab = pairs[k + 2] * 0.5 * (area[a] / aref[a] + area[b] / aref[b]);
+      const double rho = 0.5 * (sumrho[a] / nfluid[a] + sumrho[b] / nfluid[b]);
+      const double dM = exchange_mass_step(Aab * Lab * rho, dt, psi[a], psi[b],
+                                           potential_stiffness(a), potential_stiffness(b));
+      uptake[a] -= dM;
+      uptake[b] += dM;
+    }
+  }
 
   double *rho = sph->rho_array();
   double *drho = sph->drho_array();
@@ -291,9 +612,25 @@ void FixCellFluid::pre_force(int /*vflag*/)
     // hole (its triangles and their virtual particles are gone), its protoplast has burst, and
     // its fluid, inside or escaped, no longer exchanges water osmotically
     if (osmosis && m >= 1 && nfluid[m] > 0 && nbroken[m] == 0.0) {
-      const double P = sph->pressure(type[i], rho[i]);
-      const double k = osmotic_coefficient(area[m], Lp, rho[i], nfluid[m]);
-      dm = osmotic_mass_step(k, dt, P, Pi, sph->dpressure_drho(type[i], rho[i]), rho[i], rmass[i]);
+      // the outside through the exposed wall (the whole wall unless exchange yes)
+      if (external == EXT_FLUX) {
+        dm = -ext_value * exposed[m] * dt / nfluid[m];
+      } else if (lp[m] > 0.0) {
+        const double P = sph->pressure(type[i], rho[i]);
+        const double k = osmotic_coefficient(exposed[m], lp[m], rho[i], nfluid[m]);
+        double dPdrho = sph->dpressure_drho(type[i], rho[i]);
+        // kept solutes: the step's uptake dm on each of the N_f particles also raises Pi by
+        // -Pi N_f dm / W (Eq. W1), a stiffness that adds to the pressure's
+        if (solute && water[m] > 0.0) dPdrho -= pinow[m] * nfluid[m] / water[m] * rmass[i] / rho[i];
+        dm = osmotic_mass_step(k, dt, P, pinow[m] - ext_value, dPdrho, rho[i], rmass[i]);
+      }
+      dm += uptake[m] / nfluid[m];
+      if (rmass[i] + dm <= 0.0)
+        error->one(FLERR,
+                   "Fix cell/fluid {}: fluid particle {} of cell {} would lose all its mass "
+                   "({} + {}) this step: the cell has dried out (external flux or potential too "
+                   "strong for its water)",
+                   id, atom->tag[i], molecule[i], rmass[i], dm);
       flux_local[m] += dm;
       flux_stale = 1;
     }
@@ -322,18 +659,52 @@ double FixCellFluid::compute_vector(int m)
 }
 
 /* ----------------------------------------------------------------------
-   restart: -ncells, then (molecule ID, uptake) of each cell. Files of the
-   earlier format (ncells, then the uptake of molecules 1..ncells) still read.
+   array row m: the cell in slot m+1, as of the last step's exchange:
+   1 molecule ID, 2 water (fluid mass) W, 3 osmotic potential Pi,
+   4 water potential psi = mean P + Pi, 5 exposed wall area, 6 glued wall
+   area (current), 7 W0 of Eq. W1
+------------------------------------------------------------------------- */
+
+double FixCellFluid::compute_array(int row, int col)
+{
+  const int m = row + 1;
+  if (m < 1 || m > ncells || (int) water.size() <= m) return 0.0;
+  switch (col) {
+    case 0:
+      return (double) cells.id(m);
+    case 1:
+      return water[m];
+    case 2:
+      return pinow[m];
+    case 3:
+      return psi[m];
+    case 4:
+      return exposed[m];
+    case 5:
+      return area[m] - exposed[m];
+    case 6:
+      return water0[m];
+  }
+  return 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   restart: RESTART_TAG, ncells, then (molecule ID, uptake, W0) of each
+   cell. Files of the earlier formats (-ncells, then (molecule ID, uptake);
+   ncells, then the uptake of molecules 1..ncells) still read, their W0
+   taken at the next run's start.
 ------------------------------------------------------------------------- */
 
 void FixCellFluid::write_restart(FILE *fp)
 {
-  std::vector<double> sum(ncells + 1), list(1 + 2 * ncells);
+  std::vector<double> sum(ncells + 1), list(2 + 3 * ncells);
   MPI_Allreduce(flux_local, sum.data(), ncells + 1, MPI_DOUBLE, MPI_SUM, world);
-  list[0] = -ncells;
+  list[0] = RESTART_TAG;
+  list[1] = ncells;
   for (int m = 1; m <= ncells; m++) {
-    list[2 * m - 1] = (double) cells.id(m);
-    list[2 * m] = sum[m];
+    list[3 * m - 1] = (double) cells.id(m);
+    list[3 * m] = sum[m];
+    list[3 * m + 1] = water0[m];
   }
   if (comm->me == 0) {
     int size = list.size() * sizeof(double);
@@ -346,7 +717,14 @@ void FixCellFluid::restart(char *buf)
 {
   auto list = (double *) buf;
   flux_restart.clear();
-  if (list[0] < 0) {
+  water0_restart.clear();
+  if (list[0] == RESTART_TAG) {
+    const int n = (int) list[1];
+    for (int m = 1; m <= n; m++) {
+      flux_restart[(tagint) list[3 * m - 1]] += list[3 * m];
+      water0_restart[(tagint) list[3 * m - 1]] = list[3 * m + 1];
+    }
+  } else if (list[0] < 0) {
     const int n = (int) -list[0];
     for (int m = 1; m <= n; m++) flux_restart[(tagint) list[2 * m - 1]] += list[2 * m];
   } else {

@@ -18,6 +18,7 @@ FixStyle(cell/fluid,FixCellFluid);
 #include "fix.h"
 
 #include <map>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -32,14 +33,20 @@ class FixCellFluid : public Fix {
   void pre_force_respa(int, int, int) override;
   int modify_param(int, char **) override;
   double compute_vector(int) override;
+  double compute_array(int, int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
 
  protected:
-  double Pi, Lp;
-  double dt;    // step of the level where the SPH forces are
+  double Pi, Lp;    // of every cell without a per-cell setting
+  std::map<LAMMPS_NS::tagint, std::pair<double, double>> percell;    // molecule ID -> (Pi, Lp)
+  int solute;          // 1: Pi W of each cell stays Pi0 W0 (Eq. W1)
+  int exchange;        // 1: water crosses the glued walls between cells (Eq. W3)
+  int external;        // EXT_PSI: exposed walls exchange with psi_ext; EXT_FLUX: lose a set flux
+  double ext_value;    // psi_ext or the flux per area
+  double dt;           // step of the level where the SPH forces are
   int ilevel_respa;
-  int ncells;                       // number of cells, in slots 1..ncells of cells
+  int ncells;    // number of cells, in slots 1..ncells of cells
   CellMech::CellIndex cells;
   double *area, *nfluid;            // per cell, current wall area and fluid count
   double *nbroken;                  // per cell, broken tethers: its wall is open
@@ -47,10 +54,22 @@ class FixCellFluid : public Fix {
   std::map<LAMMPS_NS::tagint, double> flux_restart;    // by molecule ID, from a restart file
   int flux_stale;
   class PairCellSPH *sph;
+  // per cell (slots), the same on every rank: Pi0 and Lp of the cell, the water W0 when the fix
+  // started (Eq. W1), and this step's water, osmotic and water potentials, exposed and glued area
+  std::vector<double> pi0, lp, water0, water, pinow, psi, exposed, glued;
+  std::vector<double> aref, sump, sumstiff, sumrho;    // rest wall area, sums over the fluid
+  std::map<LAMMPS_NS::tagint, double> water0_restart;
+  int iref, ialam;    // d2_cellref and d_alam
 
+  int parse_keyword(int, char **);
   void index_cells();
   void check_group();
   void cell_geometry();
+  void cell_water();
+  void glued_pairs(std::vector<double> &);
+  double potential_stiffness(int) const;
+  bool active() const;
+  std::vector<double> pairs;    // this step's glued pairs: slot a, slot b, glued rest area
 };
 
 }    // namespace LAMMPS_NS
