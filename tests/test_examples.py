@@ -46,6 +46,10 @@ SHORT = {
                                            strain=0.02, hold=0.2, tabevery=100, img=300)),
     "in.tissue-pair": ("pair.data", dict(COARSE, restart="pair-short.restart", vplate=4, press=0.02,
                                          vpull=4, pull=0.5, every=50)),
+    # water: one cell against two external potentials; the pair with cells of different Pi
+    "in.water-potential": ("cell3.data", dict(COARSE, restart="short.restart", nlevels=1, nsteps=100,
+                                              nave=50)),
+    "in.water-pair": ("pair.data", dict(COARSE, restart="pair-short.restart", nsteps=200, every=50)),
 }
 
 
