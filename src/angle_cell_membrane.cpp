@@ -14,6 +14,9 @@
    every deformation, not only in equibiaxial stretch.
    Damping: each edge of a triangle carries gamma / 2 along it (Eq. 11), so a
    wall edge, shared by two triangles, is damped as one tether of gamma.
+   Failure (lamf): a triangle whose largest principal stretch passes lamf
+   leaves the wall; the topology follows on every rank in fix
+   CELL_TETHER_BREAK, the same bookkeeping as for broken tethers.
 ------------------------------------------------------------------------- */
 
 #include "angle_cell_membrane.h"
@@ -26,6 +29,7 @@
 #include "cell_physics.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_cell_tether_break.h"
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
@@ -46,7 +50,7 @@ static constexpr double MIN_AREA_RATIO = 1.0e-3;
 /* ---------------------------------------------------------------------- */
 
 AngleCellMembrane::AngleCellMembrane(LAMMPS *_lmp) :
-    Angle(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), iref(-1)
+    Angle(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), breakable(0)
 {
   born_matrix_enable = 0;
   writedata = 1;
@@ -59,6 +63,7 @@ AngleCellMembrane::~AngleCellMembrane()
     memory->destroy(G);
     memory->destroy(t0);
     memory->destroy(gamma);
+    memory->destroy(lamf);
   }
 }
 
@@ -70,10 +75,7 @@ void AngleCellMembrane::compute(int eflag, int vflag)
   // a membrane wall may have no tethers to watch each step for a blow-up (bond style zero)
   if (!force->bond_match("cell/tether")) CellMech::check_step_motion(lmp, "Angle style cell/membrane");
 
-  double **x = atom->x;
-  double **v = atom->v;
   double **f = atom->f;
-  double **ref = atom->darray[iref];
   int **anglelist = neighbor->anglelist;
   const int nanglelist = neighbor->nanglelist;
   const int nlocal = atom->nlocal;
@@ -85,49 +87,39 @@ void AngleCellMembrane::compute(int eflag, int vflag)
     if (type <= 0) continue;    // triangle of a broken wall
     const int ia = anglelist[n][0], ib = anglelist[n][1], ic = anglelist[n][2];
 
-    double A[3], C[3], a[3], c[3];
-    for (int d = 0; d < 3; d++) {
-      A[d] = ref[ia][d] - ref[ib][d];
-      C[d] = ref[ic][d] - ref[ib][d];
-      a[d] = x[ia][d] - x[ib][d];
-      c[d] = x[ic][d] - x[ib][d];
-    }
+    double a[3], c[3];
     MembraneRest rest;
-    if (!membrane_rest(A, C, rest))
+    MembraneStrain s;
+    if (!shape(ia, ib, ic, rest, s, a, c))
       error->one(FLERR,
                  "Angle style cell/membrane: triangle {}-{}-{} has no area in its reference "
                  "shape; are the d2_{} reference positions set and communicated to ghosts "
                  "(ghost yes)?",
                  atom->tag[ia], atom->tag[ib], atom->tag[ic], CellMech::REF_FIELD);
-    MembraneStrain s;
-    membrane_strain(rest, a, c, s);
     if (!(s.J2 > MIN_AREA_RATIO * MIN_AREA_RATIO)) degenerate(ia, ib, ic, s.J2);
+
+    if (lamf[type] > 0.0) {
+      double lam1, lam2;
+      membrane_stretches(s, lam1, lam2);
+      // tension only: lam1 >= lam2, so a triangle shortened in every direction never fails. It
+      // leaves this step's angle list now and the topology in process_failures().
+      if (lam1 > lamf[type]) {
+        anglelist[n][3] = 0;
+        std::array<tagint, 3> t = {atom->tag[ia], atom->tag[ib], atom->tag[ic]};
+        std::sort(t.begin(), t.end());
+        failed.push_back(t);
+        continue;
+      }
+    }
 
     double fa[3], fc[3];
     membrane_forces(G[type], t0[type], rest, s, fa, fc);
     if (eflag) eangle = membrane_energy(G[type], t0[type], rest, s);
 
     double fb[3] = {-fa[0] - fc[0], -fa[1] - fc[1], -fa[2] - fc[2]};
-    if (gamma[type] > 0.0) {
-      // half of Eq. 11 on each edge: a wall edge belongs to two triangles
-      const int node[3] = {ia, ib, ic};
-      double *fn[3] = {fa, fb, fc};
-      for (int e = 0; e < 3; e++) {
-        const int i = node[e], j = node[(e + 1) % 3];
-        double dx[3], dv[3];
-        for (int d = 0; d < 3; d++) {
-          dx[d] = x[i][d] - x[j][d];
-          dv[d] = v[i][d] - v[j][d];
-        }
-        const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
-        const double rdotv = dx[0] * dv[0] + dx[1] * dv[1] + dx[2] * dv[2];
-        const double fdamp = damping_fpair(0.5 * gamma[type], rdotv, rsq);
-        for (int d = 0; d < 3; d++) {
-          fn[e][d] += fdamp * dx[d];
-          fn[(e + 1) % 3][d] -= fdamp * dx[d];
-        }
-      }
-    }
+    const int node[3] = {ia, ib, ic};
+    double *fn[3] = {fa, fb, fc};
+    add_damping(type, node, fn);
 
     if (newton_bond || ia < nlocal)
       for (int d = 0; d < 3; d++) f[ia][d] += fa[d];
@@ -138,6 +130,88 @@ void AngleCellMembrane::compute(int eflag, int vflag)
     if (evflag)
       ev_tally(ia, ib, ic, nlocal, newton_bond, eangle, fa, fc, a[0], a[1], a[2], c[0], c[1], c[2]);
   }
+  if (breakable) process_failures();
+}
+
+/* ----------------------------------------------------------------------
+   Gather the triangles failed in this step on all ranks and let every rank
+   update its own atoms' topology (fix CELL_TETHER_BREAK::apply_triangles)
+------------------------------------------------------------------------- */
+
+void AngleCellMembrane::process_failures()
+{
+  std::vector<tagint> mine;
+  for (const auto &t : failed) mine.insert(mine.end(), t.begin(), t.end());
+  failed.clear();
+  const std::vector<tagint> all = FixCellTetherBreak::gather(lmp, mine);
+  if (all.empty()) return;
+  // with newton_bond off every rank that lists a triangle saw it fail
+  std::vector<std::array<tagint, 3>> triangles;
+  for (size_t k = 0; k + 2 < all.size(); k += 3)
+    triangles.push_back({all[k], all[k + 1], all[k + 2]});
+  std::sort(triangles.begin(), triangles.end());
+  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+  FixCellTetherBreak::ensure(lmp)->apply_triangles(triangles);
+}
+
+/* ----------------------------------------------------------------------
+   current and reference shape of triangle ia-ib-ic: edges a, c from the
+   central node ib and the strain; false if the reference shape has no area
+------------------------------------------------------------------------- */
+
+bool AngleCellMembrane::shape(int ia, int ib, int ic, MembraneRest &rest, MembraneStrain &s,
+                              double a[3], double c[3])
+{
+  double **x = atom->x;
+  double **ref = atom->darray[iref];
+  double A[3], C[3];
+  for (int d = 0; d < 3; d++) {
+    A[d] = ref[ia][d] - ref[ib][d];
+    C[d] = ref[ic][d] - ref[ib][d];
+    a[d] = x[ia][d] - x[ib][d];
+    c[d] = x[ic][d] - x[ib][d];
+  }
+  if (!membrane_rest(A, C, rest)) return false;
+  membrane_strain(rest, a, c, s);
+  return true;
+}
+
+// half of Eq. 11 on each edge of the triangle with nodes node[], added to their forces fn[]: a
+// wall edge belongs to two triangles
+void AngleCellMembrane::add_damping(int type, const int node[3], double *fn[3])
+{
+  if (!(gamma[type] > 0.0)) return;
+  double **x = atom->x;
+  double **v = atom->v;
+  for (int e = 0; e < 3; e++) {
+    const int i = node[e], j = node[(e + 1) % 3];
+    double dx[3], dv[3];
+    for (int d = 0; d < 3; d++) {
+      dx[d] = x[i][d] - x[j][d];
+      dv[d] = v[i][d] - v[j][d];
+    }
+    const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+    const double rdotv = dx[0] * dv[0] + dx[1] * dv[1] + dx[2] * dv[2];
+    const double fdamp = damping_fpair(0.5 * gamma[type], rdotv, rsq);
+    for (int d = 0; d < 3; d++) {
+      fn[e][d] += fdamp * dx[d];
+      fn[(e + 1) % 3][d] -= fdamp * dx[d];
+    }
+  }
+}
+
+bool AngleCellMembrane::triangle_forces(int type, int ia, int ib, int ic, double f[3][3])
+{
+  double a[3], c[3];
+  MembraneRest rest;
+  MembraneStrain s;
+  if (!shape(ia, ib, ic, rest, s, a, c) || !(s.J2 > 0.0)) return false;
+  membrane_forces(G[type], t0[type], rest, s, f[0], f[2]);
+  for (int d = 0; d < 3; d++) f[1][d] = -f[0][d] - f[2][d];
+  const int node[3] = {ia, ib, ic};
+  double *fn[3] = {f[0], f[1], f[2]};
+  add_damping(type, node, fn);
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -162,28 +236,43 @@ void AngleCellMembrane::allocate()
   memory->create(G, n + 1, "angle:G");
   memory->create(t0, n + 1, "angle:t0");
   memory->create(gamma, n + 1, "angle:gamma");
+  memory->create(lamf, n + 1, "angle:lamf");
   memory->create(setflag, n + 1, "angle:setflag");
   for (int i = 1; i <= n; i++) setflag[i] = 0;
 }
 
 /* ----------------------------------------------------------------------
-   angle_coeff N G t0 [gamma]
+   angle_coeff N G t0 [gamma] [lamf value]
 ------------------------------------------------------------------------- */
 
 void AngleCellMembrane::coeff(int narg, char **arg)
 {
-  if (narg < 3 || narg > 4)
+  // the keyword sits after the optional gamma: N G t0 lamf X, or N G t0 gamma lamf X
+  const int ikey = (narg > 3 && strcmp(arg[3], "lamf") == 0) ? 3 : 4;
+  if (narg < 3 || (narg > ikey && narg != ikey + 2))
     error->all(FLERR,
-               "Angle_coeff cell/membrane: expected 'angle_coeff N G t0 [gamma]' (shear modulus, "
-               "wall thickness, edge damping), got {} arguments",
+               "Angle_coeff cell/membrane: expected 'angle_coeff N G t0 [gamma] [lamf value]' "
+               "(shear modulus, wall thickness, edge damping, critical stretch), got {} arguments",
                narg);
+  if (narg == ikey + 2 && strcmp(arg[ikey], "lamf") != 0)
+    error->all(FLERR, "Angle_coeff cell/membrane: unknown keyword '{}', expected 'lamf'",
+               arg[ikey]);
   if (!allocated) allocate();
 
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
   const double G_one = utils::numeric(FLERR, arg[1], false, lmp);
   const double t0_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double gamma_one = narg > 3 ? utils::numeric(FLERR, arg[3], false, lmp) : 0.0;
+  const double gamma_one = ikey == 4 && narg > 3 ? utils::numeric(FLERR, arg[3], false, lmp) : 0.0;
+  double lamf_one = 0.0;
+  if (narg == ikey + 2) {
+    lamf_one = utils::numeric(FLERR, arg[ikey + 1], false, lmp);
+    if (!(lamf_one > 1.0) || !std::isfinite(lamf_one))
+      error->all(FLERR,
+                 "Angle_coeff cell/membrane: critical stretch lamf must be > 1 (a triangle fails "
+                 "when its largest principal stretch passes lamf), got {}",
+                 arg[ikey + 1]);
+  }
   if (!(G_one > 0.0) || !std::isfinite(G_one))
     error->all(FLERR, "Angle_coeff cell/membrane: shear modulus G must be > 0, got {}", arg[1]);
   if (!(t0_one > 0.0) || !std::isfinite(t0_one))
@@ -193,16 +282,20 @@ void AngleCellMembrane::coeff(int narg, char **arg)
   CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "G", G_one);
   CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "t0", t0_one);
   CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "gamma", gamma_one);
+  CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "lamf", lamf_one);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
     G[i] = G_one;
     t0[i] = t0_one;
     gamma[i] = gamma_one;
+    lamf[i] = lamf_one;
     setflag[i] = 1;
     count++;
   }
   if (count == 0) error->all(FLERR, "Incorrect args for angle coefficients");
+  // created now, so that its count (f_cell_broken) can be used in thermo and variables at once
+  if (lamf_one > 0.0) FixCellTetherBreak::ensure(lmp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -225,6 +318,24 @@ void AngleCellMembrane::init_style()
     error->all(FLERR,
                "Angle style cell/membrane with damping gamma > 0 requires 'comm_modify vel yes' "
                "(ghost velocities)");
+
+  // triangles that can fail need the topology bookkeeping of fix CELL_TETHER_BREAK (made by
+  // angle_coeff, or here for coefficients from a restart file, before the fixes are initialised)
+  breakable = 0;
+  for (int i = 1; i <= atom->nangletypes; i++)
+    if (setflag[i] && lamf[i] > 0.0) breakable = 1;
+  failed.clear();
+  if (breakable) {
+    // the nodes of an edge whose triangles have all failed become a non-bonded pair, as those of
+    // a broken tether (bond style cell/tether): the same only with 1-3 and 1-4 weights 1
+    if (force->special_lj[2] != 1.0 || force->special_lj[3] != 1.0)
+      error->all(FLERR,
+                 "Angle style cell/membrane with a critical stretch lamf requires 'special_bonds "
+                 "lj 0 1 1' (got lj {} {} {}): an edge without triangles turns its nodes into a "
+                 "non-bonded pair",
+                 force->special_lj[1], force->special_lj[2], force->special_lj[3]);
+    FixCellTetherBreak::ensure(lmp);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -242,6 +353,7 @@ void AngleCellMembrane::write_restart(FILE *fp)
   fwrite(&G[1], sizeof(double), atom->nangletypes, fp);
   fwrite(&t0[1], sizeof(double), atom->nangletypes, fp);
   fwrite(&gamma[1], sizeof(double), atom->nangletypes, fp);
+  fwrite(&lamf[1], sizeof(double), atom->nangletypes, fp);
 }
 
 void AngleCellMembrane::read_restart(FILE *fp)
@@ -252,37 +364,33 @@ void AngleCellMembrane::read_restart(FILE *fp)
     utils::sfread(FLERR, &G[1], sizeof(double), n, fp, nullptr, error);
     utils::sfread(FLERR, &t0[1], sizeof(double), n, fp, nullptr, error);
     utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
+    utils::sfread(FLERR, &lamf[1], sizeof(double), n, fp, nullptr, error);
   }
   MPI_Bcast(&G[1], n, MPI_DOUBLE, 0, world);
   MPI_Bcast(&t0[1], n, MPI_DOUBLE, 0, world);
   MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&lamf[1], n, MPI_DOUBLE, 0, world);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
 void AngleCellMembrane::write_data(FILE *fp)
 {
-  for (int i = 1; i <= atom->nangletypes; i++)
-    fprintf(fp, "%d %.15g %.15g %.15g\n", i, G[i], t0[i], gamma[i]);
+  for (int i = 1; i <= atom->nangletypes; i++) {
+    if (lamf[i] > 0.0)
+      fprintf(fp, "%d %.15g %.15g %.15g lamf %.15g\n", i, G[i], t0[i], gamma[i], lamf[i]);
+    else
+      fprintf(fp, "%d %.15g %.15g %.15g\n", i, G[i], t0[i], gamma[i]);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
 
 double AngleCellMembrane::single(int type, int i1, int i2, int i3)
 {
-  double **x = atom->x;
-  double **ref = atom->darray[iref];
-  double A[3], C[3], a[3], c[3];
-  for (int d = 0; d < 3; d++) {
-    A[d] = ref[i1][d] - ref[i2][d];
-    C[d] = ref[i3][d] - ref[i2][d];
-    a[d] = x[i1][d] - x[i2][d];
-    c[d] = x[i3][d] - x[i2][d];
-  }
+  double a[3], c[3];
   MembraneRest rest;
-  if (!membrane_rest(A, C, rest)) return 0.0;
   MembraneStrain s;
-  membrane_strain(rest, a, c, s);
-  if (!(s.J2 > 0.0)) return 0.0;
+  if (!shape(i1, i2, i3, rest, s, a, c) || !(s.J2 > 0.0)) return 0.0;
   return membrane_energy(G[type], t0[type], rest, s);
 }
 
@@ -294,5 +402,6 @@ void *AngleCellMembrane::extract(const char *str, int &dim)
   if (strcmp(str, "G") == 0) return (void *) G;
   if (strcmp(str, "t0") == 0) return (void *) t0;
   if (strcmp(str, "gamma") == 0) return (void *) gamma;
+  if (strcmp(str, "lamf") == 0) return (void *) lamf;
   return nullptr;
 }

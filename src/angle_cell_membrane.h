@@ -2,7 +2,8 @@
    SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: the cell wall as an incompressible Neo-Hookean membrane,
    one constant-strain element per wall triangle (Eqs. M1, M2), with
-   damping along the triangle's edges (Eq. 11).
+   damping along the triangle's edges (Eq. 11) and optional failure above
+   a critical principal stretch.
 ------------------------------------------------------------------------- */
 
 #ifdef ANGLE_CLASS
@@ -15,6 +16,14 @@ AngleStyle(cell/membrane,AngleCellMembrane);
 #define LMP_ANGLE_CELL_MEMBRANE_H
 
 #include "angle.h"
+
+#include <array>
+#include <vector>
+
+namespace CellPhysics {
+struct MembraneRest;
+struct MembraneStrain;
+}    // namespace CellPhysics
 
 namespace LAMMPS_NS {
 
@@ -32,10 +41,21 @@ class AngleCellMembrane : public Angle {
   double single(int, int, int, int) override;
   void *extract(const char *, int &) override;
 
- protected:
-  double *G, *t0, *gamma;
-  int iref;    // index of the reference-position array d2_cellref in atom->darray
+  // forces of the element of triangle ia-ib-ic (local or ghost atoms) on its three nodes, the
+  // elastic ones (Eq. M2) and the edge damping, as compute() applies them (for observables such
+  // as the equatorial force of compute cell/props); false if the triangle has no rest area
+  bool triangle_forces(int type, int ia, int ib, int ic, double f[3][3]);
 
+ protected:
+  double *G, *t0, *gamma, *lamf;
+  int iref;         // index of the reference-position array d2_cellref in atom->darray
+  int breakable;    // some angle type has a critical stretch lamf
+  std::vector<std::array<tagint, 3>> failed;    // triangles failed on this rank, this step
+
+  void process_failures();
+  bool shape(int ia, int ib, int ic, CellPhysics::MembraneRest &, CellPhysics::MembraneStrain &,
+             double a[3], double c[3]);
+  void add_damping(int type, const int node[3], double *fn[3]);
   void allocate();
   void degenerate(int, int, int, double);
 };

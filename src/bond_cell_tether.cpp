@@ -135,33 +135,21 @@ void BondCellTether::compute(int eflag, int vflag)
 /* ----------------------------------------------------------------------
    Gather the tethers broken in this step on all ranks, so that every rank
    updates its own atoms' special lists and triangles (fix CELL_TETHER_BREAK)
-   and the global bond count. One small reduction per step, and only for
-   bond types that can break.
+   and the global bond count. Only for bond types that can break; on more
+   than one rank it costs one small reduction per step.
 ------------------------------------------------------------------------- */
 
 void BondCellTether::process_breaks()
 {
-  int nmine = (int) broken.size();
-  int nall = 0;
-  MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
-  if (nall == 0) return;
-
-  const int nprocs = comm->nprocs;
-  std::vector<int> counts(nprocs), displs(nprocs);
-  int nsend = 2 * nmine;
-  MPI_Allgather(&nsend, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 0, off = 0; p < nprocs; p++) {
-    displs[p] = off;
-    off += counts[p];
-  }
-  std::vector<tagint> mine, all(2 * nall);
+  std::vector<tagint> mine;
   for (const auto &b : broken) {
     mine.push_back(b.first);
     mine.push_back(b.second);
   }
-  MPI_Allgatherv(mine.data(), nsend, MPI_LMP_TAGINT, all.data(), counts.data(), displs.data(),
-                 MPI_LMP_TAGINT, world);
   broken.clear();
+  const std::vector<tagint> all = FixCellTetherBreak::gather(lmp, mine);
+  if (all.empty()) return;
+  const int nall = (int) all.size() / 2;
 
   // with newton_bond off both owners of a tether saw it break
   std::vector<std::pair<tagint, tagint>> pairs;
@@ -170,10 +158,7 @@ void BondCellTether::process_breaks()
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
   atom->nbonds -= (bigint) pairs.size();
-  auto fix = dynamic_cast<FixCellTetherBreak *>(modify->get_fix_by_id(FixCellTetherBreak::ID));
-  if (!fix)
-    error->all(FLERR, "Bond style cell/tether: internal fix {} is missing", FixCellTetherBreak::ID);
-  fix->apply(pairs);
+  FixCellTetherBreak::ensure(lmp)->apply(pairs);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -259,8 +244,7 @@ void BondCellTether::coeff(int narg, char **arg)
 
 void BondCellTether::add_break_fix()
 {
-  if (!modify->get_fix_by_id(FixCellTetherBreak::ID))
-    modify->add_fix(fmt::format("{} all CELL_TETHER_BREAK", FixCellTetherBreak::ID));
+  FixCellTetherBreak::ensure(lmp);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -18,7 +18,8 @@
        cell/props), and pair cell/virtual finds the fluid near the triangle's
        virtual particle in b's neighbour list, within reach of x_b;
      - a triangle whose angle type is <= 0 has been taken out of the wall by
-       a broken tether (bond style cell/tether) and counts nowhere.
+       a broken tether (bond style cell/tether) or has failed (angle style
+       cell/membrane) and counts nowhere.
 ------------------------------------------------------------------------- */
 
 #ifndef CELLMECH_CELL_FIELDS_H

@@ -376,6 +376,19 @@ inline double equatorial_force_term(double fpair, double dn, double s1, double s
   return (s1 > s2) ? -fpair * dn : fpair * dn;
 }
 
+// A membrane triangle's share of Eq. 23 (angle style cell/membrane): the force its element
+// exerts on its nodes above the plane, along -n; positive in tension. f[k] are the element's
+// forces on its three nodes (summing to zero), s[k] the nodes' heights. Zero for a triangle
+// wholly on one side; for forces that are pair forces along the edges it is the sum of the
+// edges' equatorial_force_term.
+inline double equatorial_force_triangle(const double f[3][3], const double s[3], const double n[3])
+{
+  double share = 0.0;
+  for (int k = 0; k < 3; k++)
+    if (s[k] > 0.0) share -= f[k][0] * n[0] + f[k][1] * n[1] + f[k][2] * n[2];
+  return share;
+}
+
 // Protoplasm shear stress (Eqs. 24-26). Eq. 25 estimates the velocity gradient of particle i as
 //   g[a][b] = sum_j (m_j / rho_j) v_ji^b dW_ij/dx_i^a,  v_ji = v_j - v_i,
 // with dW_ij/dx_i^a = (dW/dr / r) del^a, del = x_i - x_j; this adds neighbour j's term with

@@ -8,12 +8,15 @@
    the IDs: row m is molecule m when the IDs are 1..N (cell_index.h):
      1 volume (divergence theorem over the wall triangles)  2 wall area
      3 mean fluid pressure  4 fluid mass  5 number of fluid particles
-     6 mean and 7 max tether stretch l/l0
+     6 mean and 7 max tether stretch l/l0 (of the wall edges)
      8 equatorial force: net tether force across the plane through the
-       cell centre with the given normal (Eq. 23), positive in tension
+       cell centre with the given normal (Eq. 23), positive in tension;
+       with angle style cell/membrane also that of the membrane triangles
+       the plane cuts
      9 fluid particles outside their own wall (winding number of the
        closed wall mesh)  10-12 cell centre (mean of the wall nodes)
-     13 broken tethers (wall rupture)
+     13 broken tethers (wall rupture; with failing membrane triangles the
+        wall edges along which the wall is open)
      14 intact middle-lamella bonds to other cells, 15 their glued area
      16 debonded lamella bonds, 17 their area (from fix cell_debonded)
      18 the cell's molecule ID
@@ -28,6 +31,7 @@
 #include "cell_compat.h"
 #include "cell_fields.h"
 
+#include "angle_cell_membrane.h"
 #include "atom.h"
 #include "bond.h"
 #include "bond_cell_tether.h"
@@ -55,7 +59,8 @@ using namespace CellPhysics;
 static constexpr double BIG = 1.0e300;
 
 ComputeCellProps::ComputeCellProps(LAMMPS *_lmp, int narg, char **arg) :
-    Compute(_lmp, narg, arg), leaks(1), ncells(0), sph(nullptr), tether(nullptr), ialam(-1), iref(-1)
+    Compute(_lmp, narg, arg), leaks(1), ncells(0), sph(nullptr), tether(nullptr), membrane(nullptr),
+    ialam(-1), iref(-1)
 {
   normal[0] = normal[1] = 0.0;
   normal[2] = 1.0;
@@ -107,7 +112,11 @@ void ComputeCellProps::init()
 {
   sph = dynamic_cast<PairCellSPH *>(force->pair_match("^cell/sph", 0));
   tether = dynamic_cast<BondCellTether *>(force->bond_match("cell/tether"));
-  if (!tether) error->all(FLERR, "Compute cell/props requires bond style cell/tether");
+  membrane = dynamic_cast<AngleCellMembrane *>(force->angle_match("cell/membrane"));
+  if (!tether && !membrane)
+    error->all(FLERR,
+               "Compute cell/props requires a cell wall: bond style cell/tether or angle style "
+               "cell/membrane");
   if (!force->newton_bond)
     error->all(FLERR, "Compute cell/props requires newton_bond on (each bond and triangle once)");
   if (!force->angle)
@@ -122,7 +131,8 @@ void ComputeCellProps::init()
                "the data file's Angles section, as cellgen.py writes it)",
                atom->nbonds);
   int flag, cols;
-  // bond style cell/tether (required above) has checked that the reference positions exist
+  // bond style cell/tether or angle style cell/membrane (required above) has checked that the
+  // reference positions exist
   iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
   ialam = atom->find_custom(CellMech::AREA_FIELD, flag, cols);
   if (ialam >= 0 && (flag != 1 || cols != 0)) ialam = -1;
@@ -218,6 +228,17 @@ void ComputeCellProps::compute_array()
     const double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
     local[NS * m + 0] += cone_volume(pa, u, w);
     local[NS * m + 1] += triangle_area(u, w);
+    if (membrane) {
+      double s[3];
+      const double *p[3] = {pa, pb, pc};
+      for (int k = 0; k < 3; k++)
+        s[k] = p[k][0] * normal[0] + p[k][1] * normal[1] + p[k][2] * normal[2];
+      const int above = (s[0] > 0.0) + (s[1] > 0.0) + (s[2] > 0.0);
+      double f[3][3];
+      // only a triangle the plane cuts carries force across it
+      if (above % 3 != 0 && membrane->triangle_forces(anglelist[n][3], a, b, cc, f))
+        local[NS * m + 7] += equatorial_force_triangle(f, s, normal);
+    }
   }
 
   // broken tethers: each counted at both of its nodes by fix CELL_TETHER_BREAK

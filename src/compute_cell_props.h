@@ -64,6 +64,7 @@ class ComputeCellProps : public Compute {
   CellMech::CellIndex cells;    // row m is the cell in slot m (ascending molecule IDs)
   class PairCellSPH *sph;
   class BondCellTether *tether;
+  class AngleCellMembrane *membrane;    // the wall's membrane elements, if they carry its forces
   int ialam;    // per-atom lamella area d_alam (tissue), -1 without one
   int iref;     // per-atom reference positions d2_cellref (rest lengths)
 

@@ -19,6 +19,11 @@
    Removing the bond itself too keeps a special list rebuilt from the bonds
    -- after read_restart or special_bonds -- equal to the one updated here,
    and write_data writes the torn wall as it is.
+   Failed membrane triangles (angle style cell/membrane) go through the
+   same steps in apply_triangles(): the triangle leaves the topology here,
+   and an edge of it is counted as broken (the wall is open along it) from
+   its first failed triangle and leaves the bond arrays and special lists
+   with its last.
    The per-atom count of broken tethers travels with the atoms and is
    written to restart files; the global scalar, the total, is half their sum.
 ------------------------------------------------------------------------- */
@@ -31,6 +36,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -84,11 +90,53 @@ double FixCellTetherBreak::compute_scalar()
 
 /* ---------------------------------------------------------------------- */
 
+FixCellTetherBreak *FixCellTetherBreak::ensure(LAMMPS *lmp)
+{
+  Fix *fix = lmp->modify->get_fix_by_id(ID);
+  if (!fix) fix = lmp->modify->add_fix(fmt::format("{} all CELL_TETHER_BREAK", ID));
+  auto *mine = dynamic_cast<FixCellTetherBreak *>(fix);
+  if (!mine)
+    lmp->error->all(FLERR,
+                    "Fix ID {} is cellmech's bookkeeping of wall failure, but fix style {} has it",
+                    ID, fix->style);
+  return mine;
+}
+
+std::vector<tagint> FixCellTetherBreak::gather(LAMMPS *lmp, const std::vector<tagint> &mine)
+{
+  // one rank has nobody to tell: no collective call in the (many) steps where nothing failed
+  if (lmp->comm->nprocs == 1) return mine;
+  // several ranks must all learn of a failure in the same step (the topology and the forced
+  // re-neighboring must agree), so a step without one still costs one reduction of an int
+  MPI_Comm world = lmp->world;
+  int nmine = (int) mine.size(), nall = 0;
+  MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
+  if (nall == 0) return {};
+  const int nprocs = lmp->comm->nprocs;
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 0, off = 0; p < nprocs; p++) {
+    displs[p] = off;
+    off += counts[p];
+  }
+  std::vector<tagint> all(nall);
+  MPI_Allgatherv(mine.data(), nmine, MPI_LMP_TAGINT, all.data(), counts.data(), displs.data(),
+                 MPI_LMP_TAGINT, world);
+  return all;
+}
+
+/* ---------------------------------------------------------------------- */
+
 void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pairs)
 {
   if (pairs.empty()) return;
-  const int nlocal = atom->nlocal;
-  tagint *tag = atom->tag;
+  for (const auto &p : pairs)
+    for (const tagint t : {p.first, p.second}) {
+      const int i = atom->map(t);
+      if (i >= 0 && i < atom->nlocal) nbroken[i] += 1.0;
+    }
+  // the bond style has taken the tethers out of the bond arrays already
+  release_edges(pairs, false);
 
   auto edge_of = [&pairs](tagint t1, tagint t2, tagint t3) {
     for (const auto &p : pairs) {
@@ -98,27 +146,142 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
     }
     return false;
   };
+  remove_triangles(edge_of);
 
-  for (const auto &p : pairs) {
+  // the pair is no longer excluded: rebuild the neighbor lists before the next force call
+  next_reneighbor = update->ntimestep + 1;
+}
+
+/* ----------------------------------------------------------------------
+   Failed membrane triangles. An edge of the wall is open (counted as broken
+   at both its nodes, as a broken tether is) from the step the first of its
+   two triangles fails: the hole lies along it. It stays in the topology --
+   bond and 1-2 special -- while a triangle still holds its nodes, and leaves
+   it with the last one, so that its nodes meet by the 8-4 contact again. An
+   edge of an open sheet's border (one triangle) leaves with its triangle and
+   is not counted: it never closed a wall.
+------------------------------------------------------------------------- */
+
+void FixCellTetherBreak::apply_triangles(const std::vector<std::array<tagint, 3>> &triangles)
+{
+  if (triangles.empty()) return;
+  using Edge = std::pair<tagint, tagint>;
+  auto sorted3 = [](tagint a, tagint b, tagint c) {
+    std::array<tagint, 3> t = {a, b, c};
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  auto edges_of = [](const std::array<tagint, 3> &t) {
+    return std::array<Edge, 3>{Edge(t[0], t[1]), Edge(t[0], t[2]), Edge(t[1], t[2])};
+  };
+
+  std::vector<Edge> all;
+  for (const auto &t : triangles)
+    for (const auto &e : edges_of(t)) all.push_back(e);
+  std::sort(all.begin(), all.end());
+  std::vector<Edge> edges;
+  std::vector<int> nfail;
+  for (const auto &e : all) {
+    if (edges.empty() || edges.back() != e) {
+      edges.push_back(e);
+      nfail.push_back(0);
+    }
+    nfail.back()++;
+  }
+  auto find = [&edges](const Edge &e) {
+    const auto it = std::lower_bound(edges.begin(), edges.end(), e);
+    return (it != edges.end() && *it == e) ? (int) (it - edges.begin()) : -1;
+  };
+
+  // triangles along each of these edges before this step, on all ranks (each triangle counted
+  // once: at its central atom, which alone stores it with newton_bond on)
+  const int nlocal = atom->nlocal;
+  tagint *tag = atom->tag;
+  std::vector<int> mine(edges.size(), 0), before(edges.size(), 0);
+  for (int i = 0; i < nlocal && atom->avec->angles_allow; i++)
+    for (int m = 0; m < atom->num_angle[i]; m++) {
+      if (!force->newton_bond && tag[i] != atom->angle_atom2[i][m]) continue;
+      const auto t =
+          sorted3(atom->angle_atom1[i][m], atom->angle_atom2[i][m], atom->angle_atom3[i][m]);
+      for (const auto &e : edges_of(t)) {
+        const int k = find(e);
+        if (k >= 0) mine[k]++;
+      }
+    }
+  MPI_Allreduce(mine.data(), before.data(), (int) edges.size(), MPI_INT, MPI_SUM, world);
+
+  remove_triangles([&](tagint a, tagint b, tagint c) {
+    return std::binary_search(triangles.begin(), triangles.end(), sorted3(a, b, c));
+  });
+
+  std::vector<Edge> released;
+  for (size_t k = 0; k < edges.size(); k++) {
+    const int after = before[k] - nfail[k];
+    if (before[k] >= 2 && after < 2)
+      for (const tagint t : {edges[k].first, edges[k].second}) {
+        const int i = atom->map(t);
+        if (i >= 0 && i < nlocal) nbroken[i] += 1.0;
+      }
+    if (after <= 0) released.push_back(edges[k]);
+  }
+  release_edges(released, true);
+
+  next_reneighbor = update->ntimestep + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellTetherBreak::release_edges(const std::vector<std::pair<tagint, tagint>> &edges,
+                                       bool bonds)
+{
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  bigint removed_local = 0, removed = 0;
+  for (const auto &e : edges)
     for (int side = 0; side < 2; side++) {
-      const tagint me = side ? p.second : p.first;
-      const tagint other = side ? p.first : p.second;
+      const tagint me = side ? e.second : e.first;
+      const tagint other = side ? e.first : e.second;
       const int i = atom->map(me);
       if (i < 0 || i >= nlocal) continue;
-      nbroken[i] += 1.0;
       remove_special12(atom, i, other);
+      // with newton_bond off both nodes store the bond; count it once
+      if (bonds && atom->avec->bonds_allow && remove_bond(atom, i, other) &&
+          (newton_bond || me < other))
+        removed_local++;
+    }
+  if (!bonds) return;
+  MPI_Allreduce(&removed_local, &removed, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  atom->nbonds -= removed;
+  // the current bond list is used until the next neighbor build (there is one only with a bond
+  // style); edges is sorted
+  if (force->bond) {
+    int **bondlist = neighbor->bondlist;
+    tagint *tag = atom->tag;
+    for (int n = 0; n < neighbor->nbondlist; n++) {
+      const tagint t1 = tag[bondlist[n][0]], t2 = tag[bondlist[n][1]];
+      if (bondlist[n][2] > 0 &&
+          std::binary_search(edges.begin(), edges.end(),
+                             std::make_pair(std::min(t1, t2), std::max(t1, t2))))
+        bondlist[n][2] = 0;
     }
   }
+}
 
-  // Triangles with a broken edge leave the angle arrays (for later neighbor builds, restarts and
-  // data files) and the global angle count ...
+/* ---------------------------------------------------------------------- */
+
+template <typename Pred> void FixCellTetherBreak::remove_triangles(Pred is_gone)
+{
+  const int nlocal = atom->nlocal;
+  tagint *tag = atom->tag;
+  // Triangles leave the angle arrays (for later neighbor builds, restarts and data files) and the
+  // global angle count ...
   bigint removed_local = 0, removed = 0;
   const int newton_bond = force->newton_bond;
   // (an atom style without angles, e.g. bond, has no triangles to update)
   for (int i = 0; i < nlocal && atom->avec->angles_allow; i++) {
     int m = 0;
     while (m < atom->num_angle[i]) {
-      if (!edge_of(atom->angle_atom1[i][m], atom->angle_atom2[i][m], atom->angle_atom3[i][m])) {
+      if (!is_gone(atom->angle_atom1[i][m], atom->angle_atom2[i][m], atom->angle_atom3[i][m])) {
         m++;
         continue;
       }
@@ -140,17 +303,14 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
     int **anglelist = neighbor->anglelist;
     for (int n = 0; n < neighbor->nanglelist; n++)
       if (anglelist[n][3] > 0 &&
-          edge_of(tag[anglelist[n][0]], tag[anglelist[n][1]], tag[anglelist[n][2]]))
+          is_gone(tag[anglelist[n][0]], tag[anglelist[n][1]], tag[anglelist[n][2]]))
         anglelist[n][3] = 0;
   }
-
-  // the pair is no longer excluded: rebuild the neighbor lists before the next force call
-  next_reneighbor = update->ntimestep + 1;
 }
 
 /* ---------------------------------------------------------------------- */
 
-void FixCellTetherBreak::remove_bond(Atom *atom, int i, tagint partner)
+bool FixCellTetherBreak::remove_bond(Atom *atom, int i, tagint partner)
 {
   int *num_bond = atom->num_bond;
   for (int m = 0; m < num_bond[i]; m++)
@@ -159,8 +319,9 @@ void FixCellTetherBreak::remove_bond(Atom *atom, int i, tagint partner)
       atom->bond_atom[i][m] = atom->bond_atom[i][last];
       atom->bond_type[i][m] = atom->bond_type[i][last];
       num_bond[i]--;
-      return;
+      return true;
     }
+  return false;
 }
 
 bool FixCellTetherBreak::remove_special12(Atom *atom, int i, tagint other)

@@ -1,8 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPDX-License-Identifier: GPL-2.0-or-later
-   cellmech: internal fix CELL_TETHER_BREAK, the bookkeeping of broken
-   wall tethers. Created by bond style cell/tether when a bond type has a
-   critical stretch (bond_coeff ... lamf v), with the ID cell_broken.
+   cellmech: internal fix CELL_TETHER_BREAK, the bookkeeping of wall
+   failure: broken tethers and failed membrane triangles. Created by bond
+   style cell/tether or angle style cell/membrane when a type has a
+   critical stretch (bond_coeff / angle_coeff ... lamf v), with the ID
+   cell_broken.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -16,6 +18,7 @@ FixStyle(CELL_TETHER_BREAK,FixCellTetherBreak);
 
 #include "fix.h"
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -30,14 +33,24 @@ class FixCellTetherBreak : public Fix {
   int setmask() override;
   double compute_scalar() override;
 
+  // the fix of this run, created if there is none yet (bond and angle styles that can fail)
+  static FixCellTetherBreak *ensure(class LAMMPS *lmp);
+  // the tags every rank has put into mine, gathered on all ranks in rank order (empty when
+  // nothing failed anywhere); every rank calls it in the same step
+  static std::vector<tagint> gather(class LAMMPS *lmp, const std::vector<tagint> &mine);
+
   // every rank calls this with the same list: the tag pairs of the tethers broken this step
   void apply(const std::vector<std::pair<tagint, tagint>> &pairs);
+  // every rank calls this with the same list: the wall triangles (tags sorted within each)
+  // that failed this step (angle style cell/membrane)
+  void apply_triangles(const std::vector<std::array<tagint, 3>> &triangles);
 
   // drop the atom with tag other from the 1-2 special list of local atom i (also used for
   // debonded lamella bonds, fix CELL_LAMELLA_BREAK); false when it is not a 1-2 neighbour
   static bool remove_special12(class Atom *atom, int i, tagint other);
-  // drop the bond to partner from atom i's bond arrays (the last bond takes its slot)
-  static void remove_bond(class Atom *atom, int i, tagint partner);
+  // drop the bond to partner from atom i's bond arrays (the last bond takes its slot); false
+  // when atom i stores no such bond
+  static bool remove_bond(class Atom *atom, int i, tagint partner);
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -49,7 +62,12 @@ class FixCellTetherBreak : public Fix {
   int size_restart(int) override;
 
  protected:
-  double *nbroken;    // per atom: broken tethers that ended at this node
+  double *nbroken;    // per atom: broken tethers (opened wall edges) that ended at this node
+
+  // take the triangles for which is_gone(tag1, tag2, tag3) holds out of the topology
+  template <typename Pred> void remove_triangles(Pred is_gone);
+  // the nodes of each edge leave each other's 1-2 list (and with bonds, the bond arrays)
+  void release_edges(const std::vector<std::pair<tagint, tagint>> &edges, bool bonds);
 };
 
 }    // namespace LAMMPS_NS

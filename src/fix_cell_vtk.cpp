@@ -127,6 +127,8 @@ void FixCellVTK::write()
   std::vector<double> tris;
   int **anglelist = neighbor->anglelist;
   for (int n = 0; n < neighbor->nanglelist; n++) {
+    // a triangle taken out of the wall in this step is still listed until the next neighbor build
+    if (anglelist[n][3] <= 0) continue;
     const int v[3] = {anglelist[n][0], anglelist[n][1], anglelist[n][2]};
     if (!(mask[v[1]] & groupbit)) continue;
     double e[3][3], e0[3][3], stretch = 0.0;

@@ -776,6 +776,41 @@ TEST(Equator, BondShareIsEq23)
   EXPECT_FALSE(crosses_equator(0.0, -0.5));
 }
 
+TEST(Equator, TriangleShareIsSumOfEdgeShares)
+{
+  // node forces made of three pair forces along the edges (any in-plane force system of a
+  // triangle with zero sum and zero moment is one): the triangle's share of Eq. 23 must be the
+  // sum of the three bonds' shares, for every way the plane can cut it, and zero when it does not
+  const double x[3][3] = {{0.3, -0.2, 0.9}, {-0.8, 0.5, 0.1}, {0.4, 0.7, -0.6}};
+  const double p[3] = {-1.3, 0.4, -2.2};    // pair factors of edges 0-1, 1-2, 2-0
+  const double n[3] = {0.36, 0.48, 0.8};
+  double f[3][3] = {};
+  for (int e = 0; e < 3; e++) {
+    const int i = e, j = (e + 1) % 3;
+    for (int d = 0; d < 3; d++) {
+      f[i][d] += p[e] * (x[i][d] - x[j][d]);
+      f[j][d] -= p[e] * (x[i][d] - x[j][d]);
+    }
+  }
+  for (const double h : {-2.0, -0.5, 0.0, 0.2, 0.6, 2.0}) {
+    double s[3];
+    for (int k = 0; k < 3; k++) s[k] = x[k][0] * n[0] + x[k][1] * n[1] + x[k][2] * n[2] - h;
+    double edges = 0.0;
+    for (int e = 0; e < 3; e++) {
+      const int i = e, j = (e + 1) % 3;
+      double dn = 0.0;
+      for (int d = 0; d < 3; d++) dn += (x[i][d] - x[j][d]) * n[d];
+      edges += equatorial_force_term(p[e], dn, s[i], s[j]);
+    }
+    const double tri = equatorial_force_triangle(f, s, n);
+    std::printf("plane at %4.1f: triangle share %.15g, sum of edge shares %.15g\n", h, tri, edges);
+    EXPECT_NEAR(tri, edges, 1e-14);
+  }
+  const double above[3] = {1.0, 2.0, 3.0}, below[3] = {-1.0, -2.0, -3.0};
+  EXPECT_NEAR(equatorial_force_triangle(f, above, n), 0.0, 1e-14);
+  EXPECT_EQ(equatorial_force_triangle(f, below, n), 0.0);
+}
+
 TEST(Shear, LinearShearFlowGivesMuGammaDot)
 {
   // Eqs. 24-26 on a lattice at rest density in the shear flow v = (gd y, 0, 0): tau_xy = mu gd,

@@ -447,7 +447,8 @@ TEST_F(Fluid, ComputePropsBadInput)
   EXPECT_ERROR("compute p all cell/props tilt 1", "Unknown keyword 'tilt' for compute cell/props");
   cmds({"compute p all cell/props", "pair_style zero 3.0", "pair_coeff * *",
         "variable v equal c_p[1][1]", "thermo_style custom step v_v"});
-  EXPECT_ERROR("run 0", "Compute cell/props requires bond style cell/tether");
+  EXPECT_ERROR("run 0", "Compute cell/props requires a cell wall: bond style cell/tether or angle "
+                        "style cell/membrane");
 }
 
 // ---------------------------------------------------------------- middle lamella
