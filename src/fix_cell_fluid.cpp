@@ -582,7 +582,10 @@ void FixCellFluid::pre_force(int /*vflag*/)
     cell_water();
     for (size_t k = 0; k < pairs.size(); k += 3) {
       const int a = (int) pairs[k], b = (int) pairs[k + 1];
-      if (nfluid[a] == 0 || nfluid[b] == 0 || nbroken[a] > 0.0 || nbroken[b] > 0.0) continue;
+      // a wall without triangles has no area to share (and no stretch to scale it by)
+      if (nfluid[a] == 0 || nfluid[b] == 0 || nbroken[a] > 0.0 || nbroken[b] > 0.0 ||
+          aref[a] <= 0.0 || aref[b] <= 0.0)
+        continue;
       const double Lab = series_conductivity(lp[a], lp[b]);
       if (Lab == 0.0) continue;
       // the glued rest area at the walls' mean areal stretch; the mean density of the two
