@@ -3,7 +3,7 @@
 """Make data.cell, the system of the force-style harness tests, from a two-cell tissue of cellgen.
 
     python3 tools/cellgen.py tissue -o two.data --centres centres.txt --level 1 --nfluid 4 \
-        --tissue-box -8 19 -8 8 -8 8          # centres.txt: "0 0 0 6" and "11 0 0 6"
+        --tissue-box -8 19 -8 8 -8 8 --bending   # centres.txt: "0 0 0 6" and "11 0 0 6"
     python3 tests/force-styles/make_data.py two.data tests/force-styles
 
 cellgen's walls are at rest (every force zero) and its box is wide. The harness compares forces,
@@ -34,7 +34,8 @@ def main(src, folder):
     out, section = ["# cellmech force-style tests (tests/force-styles/make_data.py) from:"], None
     lo = np.array([b[0] for b in BOX])
     length = np.array([b[1] - b[0] for b in BOX])
-    velocities, fields = [], ["# per-atom fields of fix cell (tests/force-styles/make_data.py)"]
+    velocities, fields = [], ["# SPDX-License-Identifier: GPL-2.0-or-later",
+                              "# per-atom fields of fix cell (tests/force-styles/make_data.py)"]
     for line in lines:
         words = line.split()
         if line and not line[0].isspace() and words and words[0][0].isalpha():
