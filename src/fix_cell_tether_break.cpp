@@ -16,6 +16,8 @@
      lists angles of type 0 until the next run starts and then drops them,
      and would stop with "Angle atoms missing" when the nodes of a torn
      triangle drift apart farther than the ghost cutoff.
+   - each hinge (dihedral) with one of those triangles as a wing leaves
+     the topology with it.
    Removing the bond itself too keeps a special list rebuilt from the bonds
    -- after read_restart or special_bonds -- equal to the one updated here,
    and write_data writes the torn wall as it is.
@@ -305,6 +307,46 @@ template <typename Pred> void FixCellTetherBreak::remove_triangles(Pred is_gone)
       if (anglelist[n][3] > 0 &&
           is_gone(tag[anglelist[n][0]], tag[anglelist[n][1]], tag[anglelist[n][2]]))
         anglelist[n][3] = 0;
+  }
+
+  // A hinge (dihedral style cell/bending: 1-2-3 and 2-3-4 the two triangles, 2-3 the shared
+  // edge) bends the wall between two triangles; with either gone there is no wall left to bend
+  // there, and kept it would pull the torn nodes back to their rest angle, so it leaves the
+  // dihedral arrays, the global count and the current dihedral list in the same way.
+  if (!atom->avec->dihedrals_allow) return;
+  auto hinge_gone = [&](tagint t1, tagint t2, tagint t3, tagint t4) {
+    return is_gone(t1, t2, t3) || is_gone(t2, t3, t4);
+  };
+  removed_local = 0;
+  for (int i = 0; i < nlocal; i++) {
+    int m = 0;
+    while (m < atom->num_dihedral[i]) {
+      if (!hinge_gone(atom->dihedral_atom1[i][m], atom->dihedral_atom2[i][m],
+                      atom->dihedral_atom3[i][m], atom->dihedral_atom4[i][m])) {
+        m++;
+        continue;
+      }
+      // with newton_bond off all four atoms store it; count it once, at its second atom
+      if (newton_bond || tag[i] == atom->dihedral_atom2[i][m]) removed_local++;
+      const int last = atom->num_dihedral[i] - 1;
+      atom->dihedral_type[i][m] = atom->dihedral_type[i][last];
+      atom->dihedral_atom1[i][m] = atom->dihedral_atom1[i][last];
+      atom->dihedral_atom2[i][m] = atom->dihedral_atom2[i][last];
+      atom->dihedral_atom3[i][m] = atom->dihedral_atom3[i][last];
+      atom->dihedral_atom4[i][m] = atom->dihedral_atom4[i][last];
+      atom->num_dihedral[i]--;
+    }
+  }
+  removed = 0;
+  MPI_Allreduce(&removed_local, &removed, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  atom->ndihedrals -= removed;
+  if (force->dihedral) {
+    int **dihedrallist = neighbor->dihedrallist;
+    for (int n = 0; n < neighbor->ndihedrallist; n++)
+      if (dihedrallist[n][4] > 0 &&
+          hinge_gone(tag[dihedrallist[n][0]], tag[dihedrallist[n][1]], tag[dihedrallist[n][2]],
+                     tag[dihedrallist[n][3]]))
+        dihedrallist[n][4] = 0;
   }
 }
 

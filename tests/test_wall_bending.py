@@ -22,6 +22,11 @@ tests/unit/test_physics.cpp (BendingHinge).
 4. 1 vs 2 ranks give the same wall, and a restart in the middle continues it exactly.
 5. Bad input: negative modulus, too few arguments, no reference positions and a collapsed hinge
    each stop with an error naming the command.
+6. Failure: a level-3 wall stretched by 1.06 in x, tethers (bond_coeff ... lamf 1.03) or membrane
+   triangles (angle_coeff ... lamf 1.03) failing in run 0: the hinges left (count, data file) are
+   exactly those whose two wings survive (computed here with numpy), their energy from the step of
+   the failure on is that of a wall holding only those hinges, on 1 and 2 ranks and after a
+   restart.
 """
 import math
 import os
@@ -238,8 +243,113 @@ def bad_input(d):
                 rc != 0 and any(expect in l for l in msg), msg[-1] if msg else "no error")
 
 
+def read_topology(path):
+    """Reference positions by ID, and the triangles, tethers and hinges of a data file."""
+    ref, sec, out = {}, None, {"Angles": [], "Bonds": [], "Dihedrals": []}
+    for line in open(path):
+        s = line.split("#")[0].strip()
+        if not s:
+            continue
+        if s[0].isalpha():
+            sec = s.split()[0]
+            continue
+        w = s.split()
+        if sec == "cell" and len(w) >= 7:
+            ref[int(w[0])] = np.array([float(w[4]), float(w[5]), float(w[6])])
+        elif sec in out:
+            out[sec].append(tuple(int(v) for v in w[2:]))
+    return ref, out["Angles"], out["Bonds"], out["Dihedrals"]
+
+
+def hinges_follow_failure(d):
+    """A hinge whose wing triangle leaves the wall (broken tether, failed membrane triangle) leaves
+    with it: arrays, count, the current list (its energy is gone in the step of the failure), on
+    1 and 2 ranks and through a restart."""
+    T.cellgen("cell", "-o", "cellb.data", "--level", 3, "--nfluid", 0, "--bending", cwd=d)
+    ref, tri, bonds, hinges = read_topology(os.path.join(d, "cellb.data"))
+    centre = np.mean(np.array(list(ref.values())), axis=0)
+    scale, lamf = np.array([1.06, 1.0, 1.0]), 1.03
+    key = lambda *t: tuple(sorted(t))
+
+    def lam1(a, b, c):
+        A, C = ref[a] - ref[b], ref[c] - ref[b]
+        e1 = A / np.linalg.norm(A)
+        n = np.cross(A, C)
+        e2 = np.cross(n / np.linalg.norm(n), e1)
+        F = np.column_stack([scale * A, scale * C]) @ np.linalg.inv(
+            np.array([[A @ e1, C @ e1], [A @ e2, C @ e2]]))
+        return np.sqrt(np.linalg.eigvalsh(F.T @ F).max())
+
+    stretch = lambda a, b: np.linalg.norm(scale * (ref[a] - ref[b])) / np.linalg.norm(ref[a] - ref[b])
+    broken = {key(a, b) for a, b in bonds if stretch(a, b) > lamf}
+    gone = {"membrane": {key(*t) for t in tri if lam1(*t) > lamf},
+            "tether": {key(*t) for t in tri
+                       if {key(t[0], t[1]), key(t[0], t[2]), key(t[1], t[2])} & broken}}
+    styles = {"membrane": (f"bond_style      zero\nbond_coeff      *\nangle_style     cell/membrane\n"
+                           f"angle_coeff     1 {G} {T0} 0.0 {{lamf}}"),
+              "tether": (f"bond_style      cell/tether\nbond_coeff      1 {G} {T0} 0.0 {{lamf}}\n"
+                         f"angle_style     zero nocoeff\nangle_coeff     *")}
+    base = setup("{data}").replace("bond_style      zero\nbond_coeff      *\nangle_style     zero\n"
+                                   "angle_coeff     *", "{styles}")
+    deform = "".join(f"variable s{x} atom ({c})+{f}*({x}-({c}))\n"
+                     for x, c, f in zip("xyz", centre, scale)) + "set group all x v_sx y v_sy z v_sz\n"
+    for wall in ("membrane", "tether"):
+        keep = [h for h in hinges if key(*h[:3]) not in gone[wall] and key(*h[1:]) not in gone[wall]]
+        # the energy of exactly the hinges that should be left, at the same positions: a data file
+        # with only those, and no failure
+        text = open(os.path.join(d, "cellb.data")).read()
+        head, tail = text.split("Dihedrals\n\n")
+        head = head.replace(f"{len(hinges)} dihedrals", f"{len(keep)} dihedrals")
+        rest = tail.split("\n\n", 1)
+        body = "".join(f"{n + 1} 1 {' '.join(map(str, h))}\n" for n, h in enumerate(keep))
+        with open(os.path.join(d, "keep.data"), "w") as f:
+            f.write(head + "Dihedrals\n\n" + body + ("\n" + rest[1] if len(rest) > 1 else ""))
+        _, log = T.lmp(base.format(data="keep.data", styles=styles[wall].format(lamf="")) + deform +
+                       'run 0\nprint "EB $(edihed:%.17g) $(dihedrals)"\n', cwd=d, log=f"log.keep-{wall}")
+        eb_expect = float(last(log, "EB")[1])
+        counts = {}
+        for np_ in (1, 2):
+            inp = base.format(data="cellb.data", styles=styles[wall].format(lamf=f"lamf {lamf}")) + deform + f"""
+thermo_style    custom step edihed dihedrals angles bonds
+thermo_modify   format float %.17g
+run             0
+print           "FAIL $(edihed:%.17g) $(dihedrals) $(angles) $(bonds)"
+write_data      after{np_}.data nocoeff
+write_restart   after{np_}.restart
+"""
+            _, log = T.lmp(inp, cwd=d, nprocs=np_, log=f"log.hinges-{wall}{np_}")
+            eb, nd, na, nb = (float(v) for v in last(log, "FAIL")[1:5])
+            left = sorted(read_topology(os.path.join(d, f"after{np_}.data"))[3])
+            cont = f"""
+units           micro
+read_restart    after{np_}.restart
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+comm_modify     vel yes cutoff 20.0
+pair_coeff      * *
+run             0
+print           "CONT $(edihed:%.17g) $(dihedrals)"
+"""
+            _, log = T.lmp(cont, cwd=d, nprocs=np_, log=f"log.hinges-{wall}{np_}-cont")
+            ebc, ndc = (float(v) for v in last(log, "CONT")[1:3])
+            counts[np_] = (nd, na, nb, eb)
+            print(f"{wall} wall, {np_} rank(s), lamf {lamf}, stretch 1.06 in x: {len(gone[wall])} "
+                  f"triangles gone, hinges {len(hinges)} -> {nd:.0f} (expected {len(keep)}), "
+                  f"after restart {ndc:.0f}; E_bend {eb:.10g}, restarted {ebc:.10g}, of the "
+                  f"expected hinges alone {eb_expect:.10g} (rel. diff {abs(eb / eb_expect - 1):.1e})")
+            T.check(f"{wall}/{np_}: some hinges leave, not all", 0 < len(keep) < len(hinges))
+            T.check(f"{wall}/{np_}: hinge count and the data file's hinges are those with both "
+                    f"wings intact", nd == len(keep) and left == sorted(keep), f"{nd:.0f}")
+            T.check(f"{wall}/{np_}: the hinges of torn triangles bend nothing from the step of "
+                    f"the failure on (1e-12)", abs(eb / eb_expect - 1) < 1e-12,
+                    f"{abs(eb / eb_expect - 1):.1e}")
+            T.check(f"{wall}/{np_}: the restart keeps them out", ndc == len(keep) and
+                    abs(ebc / eb_expect - 1) < 1e-12, f"{ndc:.0f}")
+        T.check(f"{wall}: 1 and 2 ranks agree", counts[1][:3] == counts[2][:3], str(counts))
+
+
 def main():
     d = T.workdir("wall_bending")
+    hinges_follow_failure(d)
     at_rest(d)
     cylinder(d)
     dynamics(d)
