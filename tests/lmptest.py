@@ -69,6 +69,7 @@ read_restart    {restart}
 fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
 group           wall type 1
 group           fluid type 2
+variable        dir index {INPUTS}
 include         {INPUTS}/cell-model.lmp
 fix             integrate all nve
 """

@@ -35,7 +35,7 @@ def main():
         for lam in (1.002, 1.01):
             out = f"{name}-{lam}.dat"
             T.lmp(T.INPUTS + "/in.breathing", cwd=d, variables=dict(
-                data="wall.data", G=G, t0=t0, dt=dt, nsteps=steps, lam=lam, out=out))
+                data="wall.data", G=G, t0=t0, dt=dt, nsteps=steps, lam=lam, out=out, dir=T.INPUTS))
             data = T.load(f"{d}/{out}")
             n = 2 if lam == 1.002 else 1
             w = 2 * math.pi / period(data[:, 1], data[:, 2], R, n)
@@ -57,7 +57,7 @@ def main():
         T.lmp(T.INPUTS + "/in.breathing", cwd=d, variables=dict(
             data=data, units=units, G=G * (1e3 if units == "si" else 1), t0=t0 * scale, dt=dt * scale,
             nsteps=steps, lam=1.002, out=out, f0=2.0e5 * (1e-15 if units == "si" else 1),
-            r0=1.5 * scale, cut=6.0 * scale, skin=0.1 * scale))
+            r0=1.5 * scale, cut=6.0 * scale, skin=0.1 * scale, dir=T.INPUTS))
         a = T.load(f"{d}/{out}")
         periods[units] = period(a[:, 1], a[:, 2], R * scale, 2)
     ratio = periods["si"] / (periods["micro"] * 1e-6)

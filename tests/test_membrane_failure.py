@@ -319,6 +319,7 @@ fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
 read_data       fluid.data fix cell NULL cell extra/special/per/atom 6
 group           wall type 1
 group           fluid type 2
+variable        dir index {T.INPUTS}
 include         {T.INPUTS}/cell-model.lmp
 bond_style      zero
 bond_coeff      *

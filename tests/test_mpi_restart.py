@@ -18,6 +18,7 @@ import numpy as np
 import lmptest as T
 
 SETUP = """
+variable        dir index {inputs}
 include         {inputs}/in.plates
 """
 PERTURB = """

@@ -21,6 +21,7 @@ def main():
     d = T.workdir("plates")
     T.cellgen("cell", "-o", "wall.data", "--level", 3, "--nfluid", 0, cwd=d)
     extra = f"""
+variable        dir index {T.INPUTS}
 include         {T.INPUTS}/in.plates
 variable        dtop atom (z>v_ztop)*(z-v_ztop)
 variable        dbot atom (z<v_zb)*(v_zb-z)

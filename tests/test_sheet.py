@@ -41,7 +41,7 @@ def main():
         for sides in ("free", "fixed"):
             out = f"{orient}-{sides}.dat"
             T.lmp(T.INPUTS + "/in.sheet", cwd=d, variables=dict(
-                data=f"sheet-{orient}.data", sides=sides, a=A, out=out))
+                data=f"sheet-{orient}.data", sides=sides, a=A, out=out, dir=T.INPUTS))
             data = T.load(f"{d}/{out}")
             rows[(orient, sides)] = (data[:, 0], data[:, 1] / (G * T0 * W), data[:, 2] / (G * T0 * W))
 

@@ -21,7 +21,7 @@ def main():
     T.cellgen("cell", "-o", "wall.data", "--level", 3, "--nfluid", 0, cwd=d)
     for n in (1, 2):
         T.lmp(f"include {T.INPUTS}/in.breathing\nfix surf all cell/vtk 100 walls{n}\nrun 0\n", cwd=d,
-              nprocs=n, variables=dict(data="wall.data", nsteps=0, lam=LAM), log=f"log.{n}")
+              nprocs=n, variables=dict(data="wall.data", nsteps=0, lam=LAM, dir=T.INPUTS), log=f"log.{n}")
         reader = vtk.vtkPolyDataReader()
         reader.SetFileName(f"{d}/walls{n}.0.vtk")
         reader.ReadAllScalarsOn()

@@ -16,3 +16,18 @@ mpi_run() {
 # level_params LEVEL KEY...: a row of the level table (nfluid s r0 f0 reach dt nodes), e.g.
 #   read -r nf s r0 < <(level_params 4 nfluid s r0)
 level_params() { /usr/bin/python3 -m cellmech.params level "$@"; }
+
+# WALL: the cell wall of every run (lammps-inputs/cell-wall.lmp): tether (the paper's, default),
+# membrane (Neo-Hookean triangles) or bending (membrane + hinges). wall_vars is its -var setting,
+# wall_gen the cellgen.py option its data files need (the hinges, for bending), wall_tag a suffix
+# for result folders ('' for the tethers, so their results stay where they were).
+WALL=${WALL:-tether}
+case "$WALL" in
+  tether|membrane|bending) ;;
+  *) echo "WALL must be tether, membrane or bending, got '$WALL'" >&2; exit 2 ;;
+esac
+wall_vars=(-var wall "$WALL")
+wall_gen=()
+wall_tag=""
+if [ "$WALL" != tether ]; then wall_tag="-$WALL"; fi
+if [ "$WALL" = bending ]; then wall_gen=(--bending); fi

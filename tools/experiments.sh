@@ -11,7 +11,8 @@
 #   ONLY (space-separated stage names to run, default all), RESUME=1 (skip stages already done),
 #   FALLBACK (a finished coarse run folder whose numbers the report uses for stages missing here),
 #   INPUTS (folder of the input scripts, default lammps-inputs), REPORT (report folder),
-#   PLUGIN_DIR (folder of cellmechplugin.so, default build/).
+#   WALL (tether, the default | membrane | bending: the wall, lammps-inputs/cell-wall.lmp; the run
+#   folder gets -$WALL), PLUGIN_DIR (folder of cellmechplugin.so, default build/).
 set -euo pipefail
 here=${CELLMECH_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 # on a fresh machine, set up first (LAMMPS and the plugin); later runs reuse the build
@@ -28,14 +29,14 @@ case "$RES" in
   paper)  LEVEL=4; NINFL=20000 ;;
   *) echo "RES must be coarse or paper, got '$RES'" >&2; exit 2 ;;
 esac
-out=${OUT:-$here/results/experiments-$RES}
+out=${OUT:-$here/results/experiments-$RES$wall_tag}
 if [ "$RES" = paper ]; then report=${REPORT:-$here/docs}; else report=${REPORT:-$out}; fi
 mkdir -p "$out"
 cd "$out"
 py=/usr/bin/python3
 # the discretisation's lengths at this level: the level table (tools/cellmech/params.py)
 read -r NFLUID s r0 f0 reach nwall < <(level_params $LEVEL nfluid s r0 f0 reach nodes)
-model=(-var dir "$INPUTS" -var s "$s" -var r0 "$r0" -var f0 "$f0")
+model=(-var dir "$INPUTS" -var s "$s" -var r0 "$r0" -var f0 "$f0" "${wall_vars[@]}")
 # the soft wall (cellmech.params.SOFT) deforms more between its nodes: a longer reach for the
 # triangle barycentres
 soft=($($py -c "from cellmech.params import SOFT; print('-var G %.6g -var t0 %g' % (SOFT['G'], SOFT['t0']))")
@@ -72,7 +73,7 @@ echo "RES=$RES (level $LEVEL, $NFLUID fluid), output in $out"
 # --- the stiff cell inflated to its turgor; the box leaves room for a flattened cell and for the fluid
 # that escapes a burst one (a box cannot be changed after read_restart with per-atom data) (364 kPa), and the soft cell (0.1 kPa) made from it
 inflate() {
-  $py "$here/tools/cellgen.py" cell -o cell.data --level $LEVEL --nfluid $NFLUID --inset $r0 --pad 40 > /dev/null
+  $py "$here/tools/cellgen.py" cell -o cell.data --level $LEVEL --nfluid $NFLUID --inset $r0 --pad 40 "${wall_gen[@]}" > /dev/null
   L inflate "$INPUTS/in.inflate" -var data cell.data -var nsteps $NINFL -var every 500 -var out inflate.dat \
     -var restart_out inflated.restart
 }

@@ -5,10 +5,10 @@
 # VTK surfaces during the compression (walls.STEP.vtk, for ParaView). Then a coarse tissue of 2x2x2
 # glued cells, inflated and compressed to failure: tissue-stress-strain.csv/png.
 #   coarse cell: 642 wall nodes, ~460 fluid particles; LEVEL=4: the paper's 2562 + 3500;
-#   LEVEL=5: 10242 + 14000 (the paper's fine resolution); NFLUID overrides the fluid count
+#   LEVEL=5: 10242 + 14000 (the paper's fine resolution); NFLUID overrides the fluid count;
+#   WALL=membrane|bending: the Neo-Hookean membrane wall (+ bending) for the tethers, results/main-$WALL
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-out=${OUT:-$here/results/main}
 LEVEL=${LEVEL:-3}
 NP=${NP:-1}
 # every input is checked before any work (the setup alone can take minutes)
@@ -18,6 +18,7 @@ case "$LEVEL" in 3|4|5) ;; *) bad "LEVEL must be 3, 4 or 5 (642, 2562 or 10242 w
 [ -z "${NFLUID:-}" ] || [[ "$NFLUID" =~ ^[1-9][0-9]*$ ]] ||
   bad "NFLUID (fluid particles in the cell) must be a whole number >= 1, got '$NFLUID'"
 source "$here/tools/common.sh"
+out=${OUT:-$here/results/main$wall_tag}
 # the model's lengths and time step at this level: the level table (tools/cellmech/params.py)
 read -r nf s r0 f0 reach dt < <(level_params "$LEVEL" nfluid s r0 f0 reach dt)
 bash "$here/tools/setup.sh"
@@ -26,9 +27,9 @@ mkdir -p "$out"
 cd "$out"
 NFLUID=${NFLUID:-$nf}
 ninfl=$(/usr/bin/python3 -c "print(round(25.0/$dt))")
-model=(-var dir "$here/lammps-inputs" -var s "$s" -var r0 "$r0" -var f0 "$f0" -var reach "$reach" -var dt "$dt")
+model=(-var dir "$here/lammps-inputs" -var s "$s" -var r0 "$r0" -var f0 "$f0" -var reach "$reach" -var dt "$dt" "${wall_vars[@]}")
 run() { mpi_run "$NP" "$LMP" "$@"; }
-/usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level "$LEVEL" --nfluid "$NFLUID" --inset "$r0"
+/usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level "$LEVEL" --nfluid "$NFLUID" --inset "$r0" "${wall_gen[@]}"
 echo "inflating ..."
 run -in "$here/lammps-inputs/in.inflate" -log log.inflate -screen none "${model[@]}" \
   -var data cell.data -var nsteps $ninfl -var every 500 -var out inflate.dat -var restart_out inflated.restart
@@ -44,10 +45,10 @@ run -in "$here/lammps-inputs/in.compress" -log log.compress -screen none "${mode
 echo "tissue: generating, inflating, compressing to failure ..."
 read -r tnf ts tr0 tf0 treach < <(level_params 3 nfluid s r0 f0 reach)
 /usr/bin/python3 "$here/tools/cellgen.py" tissue -o tissue.data --lattice sc --n 2 2 2 --level 3 \
-  --nfluid "$tnf" --stats tissue.json > tissue-gen.txt
+  --nfluid "$tnf" "${wall_gen[@]}" --stats tissue.json > tissue-gen.txt
 read -r treach tspecial < <(/usr/bin/python3 -c "import json; s = json.load(open('tissue.json'))
 print(max($treach, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])")
-tmodel=(-var dir "$here/lammps-inputs" -var s "$ts" -var r0 "$tr0" -var f0 "$tf0" -var reach "$treach")
+tmodel=(-var dir "$here/lammps-inputs" -var s "$ts" -var r0 "$tr0" -var f0 "$tf0" -var reach "$treach" "${wall_vars[@]}")
 run -in "$here/lammps-inputs/in.tissue-inflate" -log log.tissue-inflate -screen none "${tmodel[@]}" \
   -var data tissue.data -var special "$tspecial" -var nsteps 6000 -var every 500 \
   -var restart_out tissue.restart

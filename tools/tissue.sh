@@ -16,7 +16,8 @@
 # Environment: OUT (run folder, default results/tissue-$RES), NP (MPI ranks per run, default 1),
 #   JOBS (runs at a time, default 2), ONLY (space-separated stage names), RESUME=1 (skip stages
 #   already done), REPORT (report folder; default $OUT; "docs" = the repository's docs/),
-#   INPUTS (folder of the input scripts, default lammps-inputs).
+#   INPUTS (folder of the input scripts, default lammps-inputs), WALL (tether | membrane | bending,
+#   lammps-inputs/cell-wall.lmp; the run folder gets -$WALL).
 # Every LAMMPS run has its own sub-folder of $OUT (its log, data files, pictures, VTK surfaces); the
 # wall time of each stage is in $OUT/times.txt.
 set -euo pipefail
@@ -36,7 +37,7 @@ case "$RES" in
   small)  NB="2 2 2"; NINFL=3000; VC=4; EPSC=0.2; EPSI=0.1;  HOLDI=2;  PULL=20; EVC=100; TAB=500 ;;
   *) echo "RES must be coarse or small, got '$RES'" >&2; exit 2 ;;
 esac
-out=${OUT:-$here/results/tissue-$RES}
+out=${OUT:-$here/results/tissue-$RES$wall_tag}
 case "${REPORT:-}" in
   "") report=$out; figs=$out ;;
   docs) report=$here/docs; figs=$here/docs/tissue ;;
@@ -72,7 +73,7 @@ read -r NF3 S3 R03 F03 REACH3 < <(level_params 3 nfluid s r0 f0 reach)
 # ---- the cells: generator, with its recommended reach and the room for special neighbours
 gen() {
   $py "$here/tools/cellgen.py" tissue -o "$1.data" --lattice sc --n $2 --level 3 --nfluid $NF3 \
-    --stats "$1.json" > "$1.txt"
+    "${wall_gen[@]}" --stats "$1.json" > "$1.txt"
 }
 gen_all() { gen block "$NB" && gen pair "1 1 2" && gen single "1 1 1"; }
 stage gen gen_all
@@ -84,7 +85,7 @@ read -r reach_b special_b < <(params block)
 read -r reach_p special_p < <(params pair)
 read -r reach_s special_s < <(params single)
 # the coarse level-3 cell's lengths s, r0, f0; reach from the generator
-model() { echo -var dir "$INPUTS" -var s $S3 -var r0 $R03 -var f0 $F03 -var reach "$1"; }
+model() { echo -var dir "$INPUTS" -var s $S3 -var r0 $R03 -var f0 $F03 -var reach "$1" "${wall_vars[@]}"; }
 # frames: dump image / VTK interval for ~4 frames of a compression to strain EPS at V m/s, from the
 # block's generated height (the inflated block is a few % taller)
 frames() {

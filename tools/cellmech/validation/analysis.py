@@ -40,3 +40,34 @@ def energy_balance(t, ke, e):
     slope = np.polyfit(t, e, 1)[0]
     drift = abs(slope) * (t[-1] - t[0]) / ke.max()
     return dev, drift
+
+
+def sheet_membrane_width(path, orient):
+    """Reference width W of a cellgen.py sheet for the membrane wall's force per width P W, from
+    its data file (positions and triangles). A homogeneous stretch is exact for constant-strain
+    elements and in equilibrium with the sheet's borders (a zigzag border's two segments at a node
+    have opposite normals: their tractions cancel node by node), so:
+     * bonds along X: the free sides are straight rows, every cut across the sheet spans them:
+       W = y_max - y_min;
+     * bonds along Y: the pulled and held edges are straight columns, the only nodes of their
+       groups in in.sheet (column spacing a sqrt3/2 > 0.6 a), so the pull's work F (x_max - x_min)
+       d lam is the energy's change A0 G t0 dw: W = A0 / (x_max - x_min), A0 the triangles' area."""
+    pos, tri, sec = {}, [], None
+    for line in open(path):
+        s = line.split("#")[0].strip()
+        if not s:
+            continue
+        if s[0].isalpha():
+            sec = s.split()[0]
+            continue
+        w = s.split()
+        if sec == "Atoms":
+            pos[int(w[0])] = np.array([float(w[3]), float(w[4])])
+        elif sec == "Angles":
+            tri.append(tuple(int(v) for v in w[2:5]))
+    xy = np.array(list(pos.values()))
+    if orient == "x":
+        return float(np.ptp(xy[:, 1]))
+    area = sum(0.5 * abs((pos[b][0] - pos[a][0]) * (pos[c][1] - pos[a][1]) -
+                         (pos[b][1] - pos[a][1]) * (pos[c][0] - pos[a][0])) for a, b, c in tri)
+    return float(area / np.ptp(xy[:, 0]))

@@ -17,6 +17,7 @@ COMPRESS_STRAINS = (0.05, 0.10, 0.15, 0.20)
 BREATHING_SPEEDS = (50.0, 100.0, 250.0)
 TURGOR_SERIES = (364.0, 30.0, 300.0, 3.0)
 YL_PRESSURES = (100.0, 200.0, 400.0)
+SHEET_MEMBRANE_LAMS = (1.01, 1.05, 1.1, 1.2, 1.3, 1.4, 1.5)
 
 
 class Entry:
@@ -117,8 +118,9 @@ def case_breathing_vacuo(run, level, ctx):
     e = Entry("1-breathing-vacuo", "In-vacuo breathing of the wall (Eq. A5)",
               "simulation within 1% of Eq. A5 (stiff 3.451e7 rad/s, soft 5.943e5 rad/s)",
               resolution(level, fluid=False))
-    data = f"wall{level}.data"
-    run.cellgen(data, "cell", "--level", level, "--nfluid", 0, "--wall-mass", M_WALL)
+    bend = ["--bending"] if run.wall == "bending" else []
+    data = f"wall{level}{'-bending' if bend else ''}.data"
+    run.cellgen(data, "cell", "--level", level, "--nfluid", 0, "--wall-mass", M_WALL, *bend)
     mesh = ref.mesh_factor(level)
     k = LEVELS[level]["dt"] / 0.001          # level 5 halves the time step (lighter nodes)
     plt = _plt()
@@ -202,24 +204,34 @@ def case_young_laplace(run, level, ctx):
     e = Entry("3-young-laplace", "Young-Laplace: equatorial force of the inflated cell",
               "F_eq = P pi R^2 within 5% at P = 0.1, 0.2, 0.4 MPa", resolution(level))
     G, t0 = STIFF["G"], STIFF["t0"]
-    xs, ys = [], []
-    for P in YL_PRESSURES:
-        _, infl, nw, nf = run.inflate(level, P=P)
-        e.d["resolution"] = resolution(level, nw=nw, nf=nf)
-        st = turgid_state(run, infl)
-        fyl = st["P"] * math.pi * st["R"] ** 2
-        e.add(f"P={P:g}: F_eq vs P pi R^2", st["Feq"], fyl, "nN", tol=0.05, group="Feq")
-        lam_yl = ref.young_laplace_stretch_at(st["P"], st["R"], G, t0)
-        e.add(f"P={P:g}: strain lam-1 vs Neo-Hookean Young-Laplace", st["lam"] - 1, lam_yl - 1,
-              group="strain")
-        e.add(f"P={P:g}: mean pressure vs -Pi", st["P"], P, "kPa", group="P")
-        if st["leak"]:
-            e.note(f"P = {P:g} kPa: {st['leak']} fluid particles outside the wall")
-        xs.append(fyl)
-        ys.append(st["Feq"])
+    xs, ys = {}, {}
+    # the paper's tethers and the membrane wall side by side (rows of the membrane are named so);
+    # both have the Neo-Hookean equibiaxial law, so both must meet Young-Laplace
+    for wall in ("tether", "membrane"):
+        pre = "" if wall == "tether" else "membrane wall, "
+        xs[wall], ys[wall] = [], []
+        for P in YL_PRESSURES:
+            _, infl, nw, nf = run.inflate(level, P=P, wall=wall)
+            e.d["resolution"] = resolution(level, nw=nw, nf=nf)
+            st = turgid_state(run, infl)
+            fyl = st["P"] * math.pi * st["R"] ** 2
+            e.add(f"{pre}P={P:g}: F_eq vs P pi R^2", st["Feq"], fyl, "nN", tol=0.05,
+                  group=f"{pre}Feq")
+            lam_yl = ref.young_laplace_stretch_at(st["P"], st["R"], G, t0)
+            e.add(f"{pre}P={P:g}: strain lam-1 vs Neo-Hookean Young-Laplace", st["lam"] - 1,
+                  lam_yl - 1, group=f"{pre}strain")
+            e.add(f"{pre}P={P:g}: mean pressure vs -Pi", st["P"], P, "kPa", group=f"{pre}P")
+            if st["leak"]:
+                e.note(f"{wall} wall, P = {P:g} kPa: {st['leak']} fluid particles outside the wall")
+            xs[wall].append(fyl)
+            ys[wall].append(st["Feq"])
     plt = _plt()
     fig, ax = plt.subplots(figsize=(4.5, 4))
-    ax.plot(np.array(xs) * 1e-3, np.array(ys) * 1e-3, "o", label="simulation")
+    for wall, mk in (("tether", "o"), ("membrane", "s")):
+        ax.plot(np.array(xs[wall]) * 1e-3, np.array(ys[wall]) * 1e-3, mk, mfc="none",
+                label=f"simulation, {wall} wall")
+    xs = xs["tether"] + xs["membrane"]
+    ys = ys["tether"] + ys["membrane"]
     lim = max(xs + ys) * 1.1e-3
     ax.plot([0, lim], [0, lim], "k--", lw=1, label="F_eq = P pi R^2")
     ax.set_xlabel("P pi R^2 (uN)")
@@ -236,7 +248,8 @@ def case_young_laplace(run, level, ctx):
 
 def case_sheet(run, level, ctx):
     N, A = 20, 2.5
-    e = Entry("4-sheet", "Uniaxial stretching of a 400-node tether sheet (Eqs. A1, A2)",
+    e = Entry("4-sheet", "Uniaxial stretching of a 400-node sheet: tethers (Eqs. A1, A2) and "
+              "membrane wall (exact Neo-Hookean sheet)",
               "good agreement with A1 up to lam = 1.2; A2 error below 20%",
               dict(level=None, wall_nodes=N * N, fluid_particles=0))
     G, t0 = STIFF["G"], STIFF["t0"]
@@ -269,9 +282,23 @@ def case_sheet(run, level, ctx):
                   f[0] / (lam[0] - 1), mod, "G t0", group="modulus")
             ax.plot(lam, f, "o" if sides == "free" else "s", mfc="none",
                     label=f"bonds {orient}, {sides}")
+            # the membrane wall on the same sheet, to stretch 1.5: the exact Neo-Hookean sheet
+            # within 1% (its width W from the geometry: analysis.sheet_membrane_width)
+            out = f"sheet-membrane-{orient}-{sides}.dat"
+            run.lmp(f"variable lam index {' '.join(map(str, SHEET_MEMBRANE_LAMS))}\n"
+                    f"include {INPUTS}/in.sheet\n", f"log.sheet-membrane-{orient}-{sides}",
+                    outputs=(out,), data=data, sides=sides, a=A, out=out, wall="membrane")
+            a = np.loadtxt(run.path(out), ndmin=2)
+            Wm = analysis.sheet_membrane_width(run.path(data), orient)
+            lam, f = a[:, 0], a[:, 1] / (G * t0 * Wm)
+            for l, x, z in zip(lam, f, ref.sheet_neo_hookean(lam, sides)):
+                e.add(f"membrane wall, bonds {orient}, sides {sides}, lam {l:.2f}: F/(G t0 W) vs "
+                      f"Neo-Hookean sheet", x, z, tol=0.01, group=f"membrane-{orient}-{sides}")
+            ax.plot(lam, f, "x" if sides == "free" else "+", label=f"membrane, bonds {orient}, {sides}")
     ll = np.linspace(1, 1.2, 50)
     ax.plot(ll, ref.sheet_a1(ll), "k-", lw=1, label="Eq. A1 (free)")
     ax.plot(ll, ref.sheet_a2(ll), "k--", lw=1, label="Eq. A2 (fixed)")
+    ll = np.linspace(1, SHEET_MEMBRANE_LAMS[-1], 50)
     ax.plot(ll, ref.sheet_neo_hookean(ll, "free"), "C7-", lw=1, label="Neo-Hookean, free")
     ax.plot(ll, ref.sheet_neo_hookean(ll, "fixed"), "C7--", lw=1, label="Neo-Hookean, fixed")
     ax.set_xlabel("lam")
@@ -282,7 +309,9 @@ def case_sheet(run, level, ctx):
            "nodes) at every RES. The small-strain modulus of a triangular spring network "
            "(k = 6 G t0/sqrt3) is 4 G t0 with free sides and 4.5 G t0 with fixed ones; A1 and A2 "
            "have small-strain slopes 4 and 4.5, so the large-strain rows show where the tether "
-           "law departs from the paper's formulas.")
+           "law departs from the paper's formulas. The membrane wall (-var wall membrane) on the "
+           "same sheets is compared with the exact Neo-Hookean sheet up to stretch 1.5; its W is "
+           "the sheet's own width (y span with bonds along X, area / x span along Y).")
     return e
 
 

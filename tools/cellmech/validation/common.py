@@ -35,7 +35,7 @@ STIFF = params.stiff()
 
 
 _CODE = []
-USED_INPUTS = ("cell-model.lmp", "in.inflate", "in.compress", "in.breathing", "in.breathing-fluid",
+USED_INPUTS = ("cell-model.lmp", "cell-wall.lmp", "in.inflate", "in.compress", "in.breathing", "in.breathing-fluid",
                "in.sheet")
 
 
@@ -64,9 +64,10 @@ def log_wall_time(text):
 
 
 class Runner:
-    def __init__(self, work, nprocs=1, log=print):
+    def __init__(self, work, nprocs=1, log=print, wall="tether"):
         self.work = work
         self.nprocs = nprocs
+        self.wall = wall          # the default wall of the runs (-var wall, cell-wall.lmp)
         self.lmp_exe = os.environ.get("LMP", "lmp")
         self.mpiexec = mpiexec()
         self.say = log
@@ -111,7 +112,11 @@ class Runner:
     def lmp(self, script, log, outputs=(), **variables):
         """Run lmp on lammps-inputs/`script` with -var settings; skip if `outputs` (files in the
         work folder) exist from a run with the same settings, inputs and plugin. Returns the log
-        text."""
+        text. The wall is the Runner's unless `wall` is given; the tethers' runs carry no -var
+        wall (cell-wall.lmp's default)."""
+        wall = variables.pop("wall", self.wall)
+        if wall != "tether":
+            variables["wall"] = wall
         stamp = self.path(log + ".stamp")
         key = dict(script=script, nprocs=self.nprocs, code=code_version(),
                    **{k: str(v) for k, v in variables.items()})
@@ -126,6 +131,8 @@ class Runner:
         else:
             inp = os.path.join(INPUTS, script)
         cmd = [self.lmp_exe, "-in", inp, "-log", log, "-screen", "none"]
+        # the inputs include their wall (cell-wall.lmp) and model files from there
+        variables.setdefault("dir", INPUTS)
         for k, v in variables.items():
             cmd += ["-var", k, str(v)]
         cmd = mpi_command(cmd, self.nprocs, self.mpiexec)
@@ -157,22 +164,26 @@ class Runner:
 
     # ---- the standard cell runs, shared between cases -----------------------------------
 
-    def cell(self, level):
-        data = f"cell{level}.data"
+    def cell(self, level, wall=None):
+        # the bending wall's hinges are in the data file (cellgen.py --bending)
+        bend = (wall or self.wall) == "bending"
+        data = f"cell{level}{'-bending' if bend else ''}.data"
         nw, nf = self.cellgen(data, "cell", "--level", level, "--nfluid", LEVELS[level]["nfluid"],
-                              "--inset", LEVELS[level]["r0"])
+                              "--inset", LEVELS[level]["r0"], *(["--bending"] if bend else []))
         return data, nw, nf
 
-    def inflate(self, level, P=STIFF["P"], c=C_PHYS, t_us=None):
-        """Inflate the stiff cell at `level` to turgor P (kPa) with sound speed c; return
-        (restart file, inflate.dat name, wall nodes, fluid particles)."""
-        data, nw, nf = self.cell(level)
-        tag = f"L{level}-P{P:g}-c{c:g}"
+    def inflate(self, level, P=STIFF["P"], c=C_PHYS, t_us=None, wall=None):
+        """Inflate the stiff cell at `level` to turgor P (kPa) with sound speed c and the wall
+        `wall` (default the Runner's); return (restart file, inflate.dat name, wall nodes, fluid
+        particles)."""
+        wall = wall or self.wall
+        data, nw, nf = self.cell(level, wall)
+        tag = f"L{level}-P{P:g}-c{c:g}" + ("" if wall == "tether" else f"-{wall}")
         mv = model_vars(level)
         nsteps = int(round((t_us or T_INFLATE[level]) / mv["dt"]))
         self.lmp("in.inflate", f"log.inflate-{tag}", outputs=(f"inflate-{tag}.dat", f"inflated-{tag}.restart"),
                  dir=INPUTS, data=data, Pi=-P, c=c, nsteps=nsteps, every=nsteps // 20,
-                 out=f"inflate-{tag}.dat", restart_out=f"inflated-{tag}.restart", **mv)
+                 out=f"inflate-{tag}.dat", restart_out=f"inflated-{tag}.restart", wall=wall, **mv)
         return f"inflated-{tag}.restart", f"inflate-{tag}.dat", nw, nf
 
 

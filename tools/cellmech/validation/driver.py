@@ -11,6 +11,9 @@ Environment:
   CASES  which cases, e.g. "1,2,5" (default all: 1-7)
   STUDY_LEVELS  levels of the resolution study (default "3 4 5")
   NP     MPI ranks per LAMMPS run (default 1)
+  WALL   the wall of every run (lammps-inputs/cell-wall.lmp): tether (default) | membrane |
+         bending; OUT and WORK then default to results/validation-RES-WALL. Cases 3 and 4
+         (Young-Laplace, sheet) run the tethers and the membrane side by side whatever WALL is.
 """
 import json
 import os
@@ -24,9 +27,14 @@ from ..params import RES_LEVEL, ROOT
 
 def main():
     res = os.environ.get("RES", "coarse")
-    default_out = os.path.join(ROOT, "docs") if res == "paper" else os.path.join(ROOT, "results", f"validation-{res}")
+    wall = os.environ.get("WALL", "tether")
+    if wall not in ("tether", "membrane", "bending"):
+        sys.exit(f"validate: WALL must be tether, membrane or bending, got {wall}")
+    tag = "" if wall == "tether" else f"-{wall}"
+    default_out = (os.path.join(ROOT, "docs") if res == "paper" and not tag else
+                   os.path.join(ROOT, "results", f"validation-{res}{tag}"))
     out = os.path.abspath(os.environ.get("OUT", default_out))
-    work = os.path.abspath(os.environ.get("WORK", os.path.join(ROOT, "results", f"validation-{res}", "work")))
+    work = os.path.abspath(os.environ.get("WORK", os.path.join(ROOT, "results", f"validation-{res}{tag}", "work")))
     # a copy of the inputs as they are now (see common.INPUTS)
     snap = os.path.join(work, "lammps-inputs")
     os.makedirs(snap, exist_ok=True)
@@ -47,7 +55,7 @@ def main():
         sys.exit(f"validate: CASES must name cases among {','.join(cases.CASES)}, got {','.join(unknown)}")
     plotdir = os.path.join(out, "validation")
     os.makedirs(plotdir, exist_ok=True)
-    run = Runner(work, nprocs=int(os.environ.get("NP", "1")))
+    run = Runner(work, nprocs=int(os.environ.get("NP", "1")), wall=wall)
     ctx = dict(res=res, level=level, plotdir=plotdir,
                study_levels=[int(x) for x in os.environ.get("STUDY_LEVELS", "3 4 5").split()])
     summary_path = os.path.join(out, "validation-summary.json")

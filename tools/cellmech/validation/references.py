@@ -64,8 +64,9 @@ def young_laplace_stretch_at(P, R, G, t0):
 
 
 def young_laplace_stretch(P, R0, G, t0):
-    """Self-consistent inflated stretch: P lam R0 / 2 = G t0 (1 - lam^-6)."""
-    return brentq(lambda l: P * l * R0 / 2 - G * t0 * (1 - l ** -6), 1.0, 3.0)
+    """Self-consistent inflated stretch: P lam R0 / 2 = G t0 (1 - lam^-6), on the stable branch:
+    the pressure the membrane holds, 2 G t0 (1 - lam^-6) / (lam R0), peaks at lam = 7^(1/6)."""
+    return brentq(lambda l: P * l * R0 / 2 - G * t0 * (1 - l ** -6), 1.0, 7 ** (1 / 6))
 
 
 def sheet_a1(lam):

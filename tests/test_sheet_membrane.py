@@ -1,0 +1,66 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Issue 11: the sheet of tests/test_sheet.py with the membrane wall (lammps-inputs/in.sheet
+-var wall membrane, angle style cell/membrane) against the exact incompressible Neo-Hookean sheet,
+sides free (uniaxial stress, lam - lam^-2) and sides fixed (plane strain, lam - lam^-3), up to
+stretch 1.5, bonds along X and along Y (cellgen.py sheet --orient). The tether sheet stays in
+test_sheet.py: it is 30% stiffer than this, the finding that motivated the membrane element.
+
+A constant-strain element reproduces a homogeneous stretch exactly, and a homogeneous state is
+in equilibrium with the sheet's boundaries (a zigzag border's segments at one node have opposite
+normals, so their tractions cancel node by node), so the force must be P W to the minimiser's
+tolerance, with the nominal stress P = G t0 (lam - lam^-2) or G t0 (lam - lam^-3) and W the
+sheet's reference width from its geometry, not fitted (cellmech.validation.analysis.
+sheet_membrane_width, which says why: y span with bonds along X, A0 / x span along Y).
+Asserted: at every stretch from 1.01 to 1.5 in all four cases within 1e-6 (the issue asks for 1%;
+an exact element leaves only the minimiser's tolerance, 1e-12 here, so anything near 1e-6 would
+be an error of the element or of the boundaries), and the forces on the pulled and held edges
+balance.
+A 10 x 10 node sheet (the element is exact on any mesh; tools/validate.sh runs the paper's 20 x
+20 beside the tethers) keeps the test to seconds.
+"""
+import os
+
+import numpy as np
+
+import lmptest as T
+
+from cellmech.validation import references as ref
+from cellmech.validation.analysis import sheet_membrane_width  # W, shared with tools/validate.sh
+
+G, T0, A, N = T.STIFF["G"], T.STIFF["t0"], 2.5, 10
+LAMS = (1.01, 1.05, 1.1, 1.2, 1.3, 1.4, 1.5)
+
+
+def main():
+    d = T.workdir("sheet_membrane")
+    print(f"{'bonds':5s} {'sides':5s} {'lam':>5s} {'F/(G t0 W)':>11s} {'NeoH':>8s} {'err':>9s}")
+    worst = {}
+    for orient in ("x", "y"):
+        data = f"sheet-{orient}.data"
+        T.cellgen("sheet", "-o", data, "--nx", N, "--ny", N, "--bond", A, "--orient", orient, cwd=d)
+        W = sheet_membrane_width(os.path.join(d, data), orient)
+        for sides in ("free", "fixed"):
+            out = f"{orient}-{sides}.dat"
+            inp = f"variable lam index {' '.join(map(str, LAMS))}\ninclude {T.INPUTS}/in.sheet\n"
+            T.lmp(inp, cwd=d, log=f"log.{orient}-{sides}", variables=dict(
+                dir=T.INPUTS, wall="membrane", data=data, sides=sides, a=A, out=out))
+            a = T.load(os.path.join(d, out))
+            lam, f, fh = a[:, 0], a[:, 1] / (G * T0 * W), a[:, 2] / (G * T0 * W)
+            nh = ref.sheet_neo_hookean(lam, sides)
+            err = f / nh - 1
+            for i in range(len(lam)):
+                print(f"{orient:5s} {sides:5s} {lam[i]:5.2f} {f[i]:11.6f} {nh[i]:8.5f} {err[i]:+9.2e}")
+            worst[(orient, sides)] = np.abs(err).max()
+            T.check(f"{orient}/{sides}: the stretches 1.01 .. 1.5 were all reached",
+                    len(lam) == len(LAMS) and np.allclose(lam, LAMS))
+            T.check(f"{orient}/{sides}: pulled and held edge forces balance (1e-5)",
+                    np.allclose(f, fh, rtol=1e-5), f"max rel diff {np.max(abs(f / fh - 1)):.1e}")
+            T.check(f"{orient}/{sides}: the exact Neo-Hookean sheet within 1e-6 up to stretch 1.5",
+                    worst[(orient, sides)] < 1e-6, f"{worst[(orient, sides)]:.2e}")
+        print(f"bonds along {orient}: W = {W:.6f} um")
+    print("largest |error| per case: " + ", ".join(f"{k[0]}/{k[1]} {v:.1e}" for k, v in worst.items()))
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()
