@@ -3,7 +3,8 @@
 the same forces on 1 and 2 MPI ranks at step 0 (round-off of the summation order: 1e-12 of the
 largest force), and a run continued from write_restart / read_restart matches the uninterrupted
 run. The continued run rebuilds its neighbour lists at the same step as the uninterrupted one
-(split into two `run` commands), so positions, densities and masses agree to round-off.
+(split into two `run` commands), so positions, densities and masses agree to round-off; with the
+paper's tethers and with the membrane wall with bending (-var wall bending).
 """
 import numpy as np
 
@@ -36,23 +37,32 @@ def main():
     print(f"step 0: {len(f1)} atoms, max |f| {np.abs(f1).max():.4g} nN, 1 vs 2 ranks max diff {err:.2e}")
     T.check("step-0 forces on 1 and 2 ranks agree to round-off", err < 1e-12, f"{err:.1e}")
 
-    full = START.format(inputs=T.INPUTS) + "run 200\nwrite_restart half.restart\nrun 200\n" + \
-        DUMP.format(name="full.dump")
-    T.lmp(full, cwd=d, nprocs=2, variables=common, log="log.full")
-    cont = "variable        Lp index 1.0\n" + T.continue_cell("half.restart") + """
+    # the paper's tethers, and the membrane wall with bending (-var wall bending, its hinges from
+    # cellgen --bending): the continuing input gives the same -var wall
+    T.cellgen("cell", "-o", "cellb.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"],
+              "--bending", cwd=d)
+    for wall, data in (("tether", "cell.data"), ("bending", "cellb.data")):
+        var = dict(common, data=data, wall=wall)
+        full = START.format(inputs=T.INPUTS) + "run 200\nwrite_restart half.restart\nrun 200\n" + \
+            DUMP.format(name="full.dump")
+        T.lmp(full, cwd=d, nprocs=2, variables=var, log=f"log.full-{wall}")
+        cont = "variable        Lp index 1.0\n" + T.continue_cell("half.restart") + """
 fix             osmosis fluid cell/fluid Pi -364.0 Lp ${Lp}
 timestep        0.001
 run             200
 """ + DUMP.format(name="cont.dump")
-    T.lmp(cont, cwd=d, nprocs=2, variables={k: v for k, v in common.items() if k != "data"},
-          log="log.cont")
-    a, b = table(f"{d}/full.dump"), table(f"{d}/cont.dump")
-    dx = np.abs(a[:, 1:4] - b[:, 1:4]).max()
-    drho = np.abs(a[:, 10] - b[:, 10]).max()
-    dm = np.abs(a[:, 11] - b[:, 11]).max() / a[:, 11].max()
-    print(f"restart on 2 ranks: max position diff {dx:.2e} um, density diff {drho:.2e}, mass diff {dm:.2e}")
-    T.check("restart continues the run (positions, 1e-10 um)", dx < 1e-10, f"{dx:.1e}")
-    T.check("restart continues the run (density and mass, 1e-12)", drho < 1e-12 and dm < 1e-12)
+        T.lmp(cont, cwd=d, nprocs=2, variables={k: v for k, v in var.items() if k != "data"},
+              log=f"log.cont-{wall}")
+        a, b = table(f"{d}/full.dump"), table(f"{d}/cont.dump")
+        dx = np.abs(a[:, 1:4] - b[:, 1:4]).max()
+        drho = np.abs(a[:, 10] - b[:, 10]).max()
+        dm = np.abs(a[:, 11] - b[:, 11]).max() / a[:, 11].max()
+        print(f"{wall} wall, restart on 2 ranks: max position diff {dx:.2e} um, density diff "
+              f"{drho:.2e}, mass diff {dm:.2e}")
+        T.check(f"{wall} wall: restart continues the run (positions, 1e-10 um)", dx < 1e-10,
+                f"{dx:.1e}")
+        T.check(f"{wall} wall: restart continues the run (density and mass, 1e-12)",
+                drho < 1e-12 and dm < 1e-12)
     T.finish()
 
 
