@@ -15,10 +15,13 @@ Asserted: at every stretch from 1.01 to 1.5 in all four cases within 1e-6 (the i
 an exact element leaves only the minimiser's tolerance, 1e-12 here, so anything near 1e-6 would
 be an error of the element or of the boundaries), and the forces on the pulled and held edges
 balance.
+The bending wall on a flat sheet with hinges gives the membrane's forces (the hinges stay flat),
+and an unknown -var wall or the bending wall without hinges stop with a message.
 A 10 x 10 node sheet (the element is exact on any mesh; tools/validate.sh runs the paper's 20 x
 20 beside the tethers) keeps the test to seconds.
 """
 import os
+import re
 
 import numpy as np
 
@@ -59,6 +62,34 @@ def main():
                     worst[(orient, sides)] < 1e-6, f"{worst[(orient, sides)]:.2e}")
         print(f"bonds along {orient}: W = {W:.6f} um")
     print("largest |error| per case: " + ", ".join(f"{k[0]}/{k[1]} {v:.1e}" for k, v in worst.items()))
+
+    # -var wall bending on a sheet with hinges (cellgen --bending): stretched in its plane, the
+    # hinges stay flat and store nothing, so the forces are the membrane's
+    T.cellgen("sheet", "-o", "sheet-xb.data", "--nx", N, "--ny", N, "--bond", A, "--orient", "x",
+              "--bending", cwd=d)
+    inp = f"variable lam index {' '.join(map(str, LAMS))}\ninclude {T.INPUTS}/in.sheet\n"
+    _, log = T.lmp(inp, cwd=d, log="log.x-free-bending", variables=dict(
+        dir=T.INPUTS, wall="bending", data="sheet-xb.data", sides="free", a=A, out="xb-free.dat"))
+    fb, fm = T.load(os.path.join(d, "xb-free.dat"))[:, 1], T.load(os.path.join(d, "x-free.dat"))[:, 1]
+    diff = np.abs(fb / fm - 1).max()
+    hinges = re.search(r"^\s*(\d+) dihedrals", log, flags=re.M)
+    styled = re.search(r"^dihedral_style\s+cell/bending", log, flags=re.M) is not None
+    print(f"bending wall, bonds x, free sides: {hinges.group(1) if hinges else 0} hinges, "
+          f"dihedral_style cell/bending {'set' if styled else 'not set'}; forces differ from the "
+          f"membrane's by {diff:.1e}")
+    T.check("bending wall on a flat sheet: hinges in use, the membrane's forces (1e-9)",
+            diff < 1e-9 and styled and hinges is not None and int(hinges.group(1)) > 0, f"{diff:.1e}")
+
+    # bad input: an unknown wall, and the bending wall without hinges in the data file
+    for name, wall, data, expect in (
+            ("unknown wall", "shell", "sheet-x.data", "-var wall shell: expected tether, membrane or bending"),
+            ("bending without hinges", "bending", "sheet-x.data", "no dihedrals: write it with cellgen.py")):
+        rc, log = T.lmp(inp, cwd=d, check=False, log=f"log.bad-{wall}", variables=dict(
+            dir=T.INPUTS, wall=wall, data=data, sides="free", a=A, out="bad.dat"))
+        msg = [l for l in log.splitlines() if l.startswith("ERROR")]
+        print(f"{name}: rc {rc}, {msg[-1] if msg else 'no error'}")
+        T.check(f"bad input ({name}) stops with a message naming -var wall",
+                rc != 0 and any(expect in l for l in msg), msg[-1] if msg else "no error")
     T.finish()
 
 
