@@ -19,7 +19,8 @@
 #   -r REPEAT  runs per case (default 3)
 #   -n NSTEPS  steps per run (default 2000)
 #   -k         keep the work folder (data files and LAMMPS logs) and print its path
-# Environment: LMP (else build/cellmech-env.sh is sourced), NP, REPEAT, NSTEPS, PYTHON.
+# Environment: LMP (else build/cellmech-env.sh is sourced), NP, REPEAT, NSTEPS, PYTHON, WALL (the
+#   wall of the full cell: tether, membrane or bending; lammps-inputs/cell-wall.lmp).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 NP=${NP:-1}
@@ -55,7 +56,7 @@ cd "$work"
 
 # ---- the cell and its fluid ----------------------------------------------------------------------
 read -r NF4 R04 < <(level_params 4 nfluid r0)
-gen=$("$PYTHON" "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid "$NF4" --inset "$R04")
+gen=$("$PYTHON" "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid "$NF4" --inset "$R04" "${wall_gen[@]}")
 spacing=$(sed -n 's/.*spacing \([0-9.eE+-]*\),.*/\1/p' <<<"$gen" | head -n1)
 # the fluid (type 2) of cell.data, in its box, as data files for atom_style sph and molecular
 awk '
@@ -105,7 +106,7 @@ run_case() {   # name, then LAMMPS arguments
 
 run_case stock-sph -in "$bench/in.stock-sph" -var data fluid-sph.data -var nsteps "$NSTEPS"
 run_case cell-sph -in "$bench/in.cell-sph" -var data fluid-cell.data -var m "$mfluid" -var nsteps "$NSTEPS"
-run_case cell-full -in "$inputs/in.inflate" -var dir "$inputs" -var data cell.data \
+run_case cell-full -in "$inputs/in.inflate" -var dir "$inputs" "${wall_vars[@]}" -var data cell.data \
   -var nsteps "$NSTEPS" -var every 1000 -var out inflate.dat -var restart_out inflated.restart
 
 # ---- report ------------------------------------------------------------------------------------

@@ -3,18 +3,19 @@
 # Inflation of the stiff cell at the paper's resolution (2562 wall nodes, 3500 fluid particles) to
 # P = 100, 200, 364 and 400 kPa: mean pressure, stretch against Young-Laplace, equatorial force
 # against P pi R^2, leaks, mass balance. Prints a table and the wall time. Not part of CI.
+# WALL=membrane|bending: that wall (lammps-inputs/cell-wall.lmp), into inflation-paper-WALL.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$here/build/cellmech-env.sh"
 source "$here/tools/common.sh"
 read -r NF4 R04 < <(level_params 4 nfluid r0)
-out=${OUT:-$here/results/inflation-paper}
+out=${OUT:-$here/results/inflation-paper$wall_tag}
 mkdir -p "$out" && cd "$out"
-/usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid $NF4 --inset $R04
+/usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid $NF4 --inset $R04 "${wall_gen[@]}"
 for P in ${PRESSURES:-100 200 364 400}; do
   start=$(date +%s)
   "$LMP" -in "$here/lammps-inputs/in.inflate" -log "log.$P" -screen none -var dir "$here/lammps-inputs" \
-    -var data cell.data -var Pi "-$P" -var nsteps ${NSTEPS:-20000} -var every 1000 -var out "inflate-$P.dat" \
+    "${wall_vars[@]}" -var data cell.data -var Pi "-$P" -var nsteps ${NSTEPS:-20000} -var every 1000 -var out "inflate-$P.dat" \
     -var restart_out "inflated-$P.restart"
   echo "P=$P kPa: wall time $(( $(date +%s) - start )) s"
 done
