@@ -61,7 +61,7 @@ cat "$out"
 declare -A base
 for n in $SIZES; do
   $py "$here/tools/cellgen.py" tissue -o t$n.data --lattice sc --n $n $n $n --level 3 --nfluid $NF3 \
-    --stats t$n.json > /dev/null
+    "${wall_gen[@]}" --stats t$n.json > /dev/null
   read -r reach special nbc < <($py -c "import json; s = json.load(open('t$n.json'))
 print(max($REACH3, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'], s['neighbours_mean'] if s['cells'] > 1 else 0)")
   cat > in.bench <<EOF
@@ -69,7 +69,7 @@ include $here/lammps-inputs/in.tissue-inflate
 run $NSTEPS
 EOF
   for np in $RANKS; do
-    mpi_run "$np" "$LMP" -in in.bench -log log.$n.$np -screen none -var dir "$here/lammps-inputs" \
+    mpi_run "$np" "$LMP" -in in.bench -log log.$n.$np -screen none -var dir "$here/lammps-inputs" "${wall_vars[@]}" \
       -var data t$n.data -var special "$special" -var s $S3 -var r0 $R03 -var f0 $F03 \
       -var reach "$reach" -var nsteps "$WARM" -var nsettle "$SETTLE" -var every "$WARM" -var restart_out none.restart \
       -var out none.dat -var cells none-cells.dat
