@@ -50,6 +50,9 @@ SHORT = {
     "in.water-potential": ("cell3.data", dict(COARSE, restart="short.restart", nlevels=1, nsteps=100,
                                               nave=50)),
     "in.water-pair": ("pair.data", dict(COARSE, restart="pair-short.restart", nsteps=200, every=50)),
+    # the pair dried to 99% of its water: the stop (fix halt), the shape and VTK/fluid outputs
+    "in.tissue-dry": ("pair.data", dict(COARSE, restart="pair-short.restart", target=0.99,
+                                        nmax=400, every=50, vtk=100)),
 }
 
 

@@ -9,6 +9,13 @@
 #      (in.tissue-compress, lamf 1.04): stress-strain, modulus, failure strain and mode;
 #   3. impact: the turgid block (Pi -364) hit at 5, 10, 20 m/s (in.tissue-impact): bruise
 #      (ruptured cells, debonded area, fluid lost) against the impact energy.
+#   4. water (fix cell/fluid solute/exchange/external): one inflated cell against external water
+#      potentials from 0 to Pi (in.water-potential); the glued pair with cell 2 at Pi -200 kPa
+#      (in.water-pair); a 2x2x2 block dried to 20% of its water through its exposed faces
+#      (in.tissue-dry), and a short leg at half the conductivity (the quasi-static check).
+#      ONLY="gen inflate-pair water-potential water-pair water-inflate water-dry water-dry-slow
+#      report-water" runs these alone (a few minutes); report-water writes only the report's
+#      "Water" section into an existing tissue.md (and its key in the summary).
 #   RES=coarse bash tools/tissue.sh   # level-3 walls (642 nodes), 27-cell block (default; ~20 min on 2 cores)
 #   RES=small  bash tools/tissue.sh   # quick check: 8-cell block (2x2x2), shorter runs (a few minutes)
 #   RES=coarse REPORT=docs bash tools/tissue.sh   # the committed report: docs/tissue.md, docs/tissue/*.png,
@@ -136,6 +143,42 @@ bg pair pairrun 2 "$reach_p" pair
 bg single pairrun 1 "$reach_s" single
 wait
 
+# ---- water: experiment 1 (one coarse cell, in.inflate then in.water-potential), 2 (the inflated
+# pair), 3 (a 2x2x2 block inflated and dried; a short leg at half Lp checks the rate's effect)
+waterpot() {
+  $py "$here/tools/cellgen.py" cell -o cell.data --level 3 --nfluid $NF3 --inset $R03 > /dev/null
+  lmp -in "$INPUTS/in.inflate" -screen none $(model "$REACH3") -var data cell.data -var nsteps $NINFL \
+    -var every 500 -var restart_out inflated.restart
+  lmp -in "$INPUTS/in.water-potential" -screen none $(model "$REACH3") -var restart inflated.restart \
+    -var nlevels 8 -var nsteps 4000 -var nave 1000
+}
+waterpair() {
+  lmp -in "$INPUTS/in.water-pair" -screen none $(model "$reach_p") -var restart \
+    "$out/inflate-pair/pair.restart" -var Pi -364 -var Pi2 -200 -var nsteps 10000 -var every 50
+}
+waterinfl() {
+  gen dry "2 2 2"
+  read -r r k < <($py -c "import json; s = json.load(open('dry.json'))
+print(max($REACH3, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])")
+  echo "$r $k" > reach-special.txt
+  lmp -in "$INPUTS/in.tissue-inflate" -screen none $(model "$r") -var data dry.data -var special "$k" \
+    -var Pi -364 -var nsteps $NINFL -var every 500 -var restart_out dry.restart
+}
+waterdry() {  # LP TARGET VTK
+  read -r r k < "$out/water-inflate/reach-special.txt"
+  lmp -in "$INPUTS/in.tissue-dry" -screen none $(model "$r") -var special "$k" -var Pi -364 \
+    -var restart "$out/water-inflate/dry.restart" -var Lp "$1" -var target "$2" -var every 1000 \
+    -var vtk "$3" -var nmax 200000
+}
+bg water-potential waterpot
+bg water-pair waterpair
+stage water-inflate waterinfl
+bg water-dry waterdry 2.0e-4 0.2 6000
+bg water-dry-slow waterdry 1.0e-4 0.7 0
+wait
+
 echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
 want report && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" --figs "$figs"
+[ -n "${ONLY:-}" ] && want report-water && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" \
+  --figs "$figs" --only water
 echo "tissue done: $out (report $report/tissue.md)"

@@ -17,6 +17,7 @@ import sys
 import numpy as np
 
 from . import tissuedata as T  # noqa: E402
+from . import water  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -753,16 +754,46 @@ class Report:
             json.dump(clean(self.S), f, indent=1)
 
 
+def splice_water(rep):
+    """The Water section alone, in place of the one in REPORT/tissue.md (before "## Pictures" if it
+    has none), and its key in tissue-summary.json; the rest of both files stays as it is."""
+    water.section(rep)
+    path = os.path.join(rep.report, "tissue.md")
+    lines = open(path).read().split("\n") if os.path.exists(path) else []
+    heads = [k for k, ln in enumerate(lines) if ln.startswith("## ")]
+    start = next((k for k in heads if lines[k] == "## Water"), None)
+    if start is None:
+        end = start = next((k for k in heads if lines[k] in ("## Pictures", "## Wall times")), len(lines))
+    else:
+        end = next((k for k in heads if k > start), len(lines))
+    lines[start:end] = rep.md
+    with open(path, "w") as f:
+        f.write("\n".join(lines).rstrip("\n") + "\n")
+    jp = os.path.join(rep.report, "tissue-summary.json")
+    summary = json.load(open(jp)) if os.path.exists(jp) else {}
+    summary["water"] = json.loads(json.dumps(rep.S["water"], default=float))
+    with open(jp, "w") as f:
+        json.dump(summary, f, indent=1)
+    print(f"report: the Water section of {path}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--run", required=True)
     ap.add_argument("--res", default="coarse")
     ap.add_argument("--report", required=True)
     ap.add_argument("--figs")
+    ap.add_argument("--only", choices=["water"],
+                    help="write only this section into the existing tissue.md and summary (the other "
+                    "sections stay as they are)")
     a = ap.parse_args()
     run = os.path.abspath(a.run)
     rep = Report(run, a.res, os.path.abspath(a.report), os.path.abspath(a.figs or a.report))
-    for part in (rep.inflations, rep.pair, rep.blocks, rep.impacts, rep.pictures, rep.walltimes):
+    if a.only:
+        splice_water(rep)
+        return
+    for part in (rep.inflations, rep.pair, rep.blocks, rep.impacts, lambda: water.section(rep), rep.pictures,
+                 rep.walltimes):
         try:
             part()
         except Exception as e:  # report what is there

@@ -1,0 +1,53 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The shape measures of the drying report (cellmech.tissue.water.shape) on bodies whose values are
+known in closed form, and the splice that writes the Water section alone into an existing report."""
+import math
+import os
+import types
+
+import numpy as np
+
+from cellmech.tissue import report, water
+
+
+def test_shape_sphere_and_cube():
+    R, a = 30.0, 48.0
+    # a sphere: V, A; gyration tensor of a spherical shell R^2/3 on the diagonal
+    cells = np.array([[4 / 3 * math.pi * R ** 3, 4 * math.pi * R ** 2],
+                      [a ** 3, 6 * a ** 2]])
+    gyr = np.array([[R ** 2 / 3] * 3 + [0.0] * 3, [a ** 2 / 4] * 3 + [0.0] * 3])
+    sph, el = water.shape(cells, gyr)
+    print("sphericity sphere, cube:", sph, "elongation:", el)
+    assert abs(sph[0] - 1.0) < 1e-12
+    assert abs(sph[1] - (math.pi / 6) ** (1 / 3)) < 1e-12   # 0.806 for a cube
+    assert np.allclose(el, 1.0, atol=1e-12)
+
+
+def test_shape_elongation_rotated():
+    # a tensor with principal values 4, 1, 1 (radii 2:1), rotated about z by 30 degrees
+    c, s = math.cos(math.pi / 6), math.sin(math.pi / 6)
+    Q = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+    G = Q @ np.diag([4.0, 1.0, 1.0]) @ Q.T
+    g = np.array([[G[0, 0], G[1, 1], G[2, 2], G[0, 1], G[0, 2], G[1, 2]]])
+    sph, el = water.shape(np.array([[1.0, 5.0]]), g)
+    print("elongation of a 2:1 tensor:", el[0])
+    assert abs(el[0] - 2.0) < 1e-12
+
+
+def test_splice_keeps_other_sections(tmp_path):
+    md = tmp_path / "tissue.md"
+    md.write_text("# T\n\n## 3. Impact\n\nkeep me\n\n## Water\n\nold water\n\n## Pictures\n\nkeep too\n")
+    (tmp_path / "tissue-summary.json").write_text('{"impact": 1}')
+    rep = types.SimpleNamespace(report=str(tmp_path), md=[], S={})
+    rep.w = rep.md.extend
+    orig = water.section
+    try:
+        water.section = lambda r: (r.w(["## Water", "", "new water", ""]), r.S.update(water={"x": 1.0}))
+        report.splice_water(rep)
+    finally:
+        water.section = orig
+    text = md.read_text()
+    print(text)
+    assert "keep me" in text and "keep too" in text and "new water" in text and "old water" not in text
+    assert text.index("new water") < text.index("## Pictures")
+    assert open(os.path.join(tmp_path, "tissue-summary.json")).read().count('"impact"') == 1

@@ -1,0 +1,416 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The "Water" section of the tissue report (tools/tissue.sh stages water-*): one cell against
+external water potentials (in.water-potential), two cells of different Pi (in.water-pair) and a
+2x2x2 block dried to 20% of its water (in.tissue-dry), with CSV files, plots and wall pictures."""
+import glob
+import math
+import os
+
+import numpy as np
+
+from . import tissuedata as T
+
+import matplotlib  # noqa: E402
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+FRACTIONS = (1.0, 0.8, 0.6, 0.4, 0.2)   # water contents of the pictures (nearest VTK frame)
+
+
+def read_csv(path):
+    a = np.genfromtxt(path, delimiter=",", names=True)
+    return {k: np.atleast_1d(a[k]) for k in a.dtype.names}
+
+
+def read_vtk(path):
+    """Points and triangles of a legacy ASCII VTK file of fix cell/vtk."""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    i = next(k for k, ln in enumerate(lines) if ln.startswith("POINTS"))
+    n = int(lines[i].split()[1])
+    pts = np.array([list(map(float, ln.split())) for ln in lines[i + 1:i + 1 + n]])
+    j = next(k for k, ln in enumerate(lines) if ln.startswith("POLYGONS"))
+    m = int(lines[j].split()[1])
+    tri = np.array([list(map(int, ln.split()[1:4])) for ln in lines[j + 1:j + 1 + m]])
+    return pts, tri
+
+
+def read_dump(path):
+    """id mol x y z mass d_rho of a dump custom snapshot."""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    i = next(k for k, ln in enumerate(lines) if ln.startswith("ITEM: ATOMS"))
+    return np.array([list(map(float, ln.split())) for ln in lines[i + 1:] if ln.strip()])
+
+
+def shape(cells, gyr):
+    """Per cell: sphericity pi^(1/3) (6V)^(2/3) / A (1 for a sphere, 0.806 for a cube) and
+    elongation sqrt(g1/g3) of the wall nodes' gyration tensor (1 for a sphere or a cube)."""
+    V, A = cells[:, 0], cells[:, 1]
+    sph = math.pi ** (1 / 3) * (6 * V) ** (2 / 3) / A
+    el = []
+    for g in gyr:
+        G = np.array([[g[0], g[3], g[4]], [g[3], g[1], g[5]], [g[4], g[5], g[2]]])
+        ev = np.linalg.eigvalsh(G)
+        el.append(math.sqrt(ev[-1] / ev[0]))
+    return sph, np.array(el)
+
+
+def potential(rep, S):
+    p = rep.p("water-potential/water-potential.csv")
+    if not os.path.exists(p):
+        rep.w("### 1. One cell against external water potentials", "", "Not run or failed.", "")
+        return
+    d = read_csv(p)
+    T.write_csv(rep.fig("water-potential.csv"), d, list(d),
+                "in.water-potential: one coarse cell (Pi -364 kPa, Lp 10) per external water potential")
+    fig, ax = plt.subplots(1, 3, figsize=(12, 3.4))
+    ax[0].plot(d["psi_ext_kPa"], d["turgor_kPa"], "o-", label="turgor")
+    ax[0].plot(d["psi_ext_kPa"], d["psi_ext_kPa"] + 364, "k:", label="psi_ext - Pi")
+    ax[0].set_ylabel("kPa")
+    ax[0].legend()
+    ax[1].plot(d["psi_ext_kPa"], d["volume_um3"] / d["volume_um3"][0], "o-", label="volume")
+    ax[1].plot(d["psi_ext_kPa"], d["water_pg"] / d["water_pg"][0], "s--", label="water")
+    ax[1].set_ylabel("/ value at psi_ext = 0")
+    ax[1].legend()
+    ax[2].plot(d["psi_ext_kPa"], d["mean_stretch"], "o-", label="mean")
+    ax[2].plot(d["psi_ext_kPa"], d["max_stretch"], "s--", label="max")
+    ax[2].set_ylabel("tether stretch")
+    ax[2].legend()
+    for a in ax:
+        a.set_xlabel("external water potential (kPa)")
+    fig.tight_layout()
+    fig.savefig(rep.fig("water-potential.png"), dpi=90)
+    plt.close(fig)
+    err = float(np.max(np.abs(d["turgor_kPa"] - (d["psi_ext_kPa"] + 364.0))))
+    S["potential"] = dict(levels=len(d["psi_ext_kPa"]), max_turgor_error_kPa=err,
+                          volume_change=float(d["volume_um3"][-1] / d["volume_um3"][0] - 1),
+                          stretch_full=float(d["mean_stretch"][0]), stretch_zero=float(d["mean_stretch"][-1]))
+    rep.w("### 1. One cell against external water potentials", "",
+          "`in.water-potential` after `in.inflate` (one coarse stiff cell, Pi -364 kPa, Lp 10 um/(kPa us), "
+          "a drag brings each level to rest): psi_ext from 0 to Pi in 8 steps. At equilibrium Eq. 10 gives "
+          "P = psi_ext - Pi, which the cell reaches at every level to "
+          f"{err:.2g} kPa. Volume {100 * S['potential']['volume_change']:.3g}% from full to zero turgor, "
+          f"mean tether stretch {S['potential']['stretch_full']:.4f} -> {S['potential']['stretch_zero']:.4f}: "
+          "the stiff wall (E = 2.4 GPa) carries turgor at less than 1% stretch, so the cell hardly shrinks "
+          "while it loses its turgor.", "",
+          f"![one cell]({rep.link('water-potential.png')})", "",
+          f"Data: [water-potential.csv]({rep.link('water-potential.csv')}).", "")
+
+
+def pair(rep, S):
+    p = rep.p("water-pair/water-pair.csv")
+    if not os.path.exists(p):
+        rep.w("### 2. Two cells of different osmotic potentials", "", "Not run or failed.", "")
+        return
+    d = read_csv(p)
+    T.write_csv(rep.fig("water-pair.csv"), d, list(d),
+                "in.water-pair: glued pair, cell 1 Pi -364 kPa, cell 2 Pi0 -200 kPa, solute yes, Lp 1, outside shut")
+    fig, ax = plt.subplots(1, 3, figsize=(12, 3.4))
+    t = d["time_us"]
+    ax[0].plot(t, d["water1_pg"], label="cell 1")
+    ax[0].plot(t, d["water2_pg"], label="cell 2")
+    ax[0].set_ylabel("water (pg)")
+    ax[1].plot(t, d["turgor1_kPa"], label="cell 1")
+    ax[1].plot(t, d["turgor2_kPa"], label="cell 2")
+    ax[1].set_ylabel("turgor (kPa)")
+    ax[2].plot(t, d["psi1_kPa"], label="cell 1")
+    ax[2].plot(t, d["psi2_kPa"], label="cell 2")
+    ax[2].set_ylabel("water potential P + Pi (kPa)")
+    for a in ax:
+        a.set_xlabel("time (us)")
+        a.legend()
+    fig.tight_layout()
+    fig.savefig(rep.fig("water-pair.png"), dpi=90)
+    plt.close(fig)
+    tot = d["water1_pg"] + d["water2_pg"]
+    S["pair"] = dict(moved_pg=float(d["uptake1_pg"][-1]), psi_gap_start_kPa=float(d["psi1_kPa"][0] - d["psi2_kPa"][0]),
+                     psi_gap_end_kPa=float(d["psi1_kPa"][-1] - d["psi2_kPa"][-1]),
+                     total_drift_rel=float(np.max(np.abs(tot - tot[0])) / tot[0]),
+                     turgor_end_kPa=[float(d["turgor1_kPa"][-1]), float(d["turgor2_kPa"][-1])])
+    q = S["pair"]
+    rep.w("### 2. Two cells of different osmotic potentials", "",
+          "`in.water-pair`: the inflated glued pair; cell 2 gets Pi0 -200 kPa (solutes kept, Eq. W1), the outside "
+          "is shut (`external flux 0`) and water crosses the glued face only (Eqs. W2-W3, Lp 1 um/(kPa us)). "
+          f"Cell 1 took up {q['moved_pg']:.4g} pg from cell 2; the gap of the water potentials went from "
+          f"{q['psi_gap_start_kPa']:.4g} to {q['psi_gap_end_kPa']:.3g} kPa, turgors at the end "
+          f"{q['turgor_end_kPa'][0]:.4g} and {q['turgor_end_kPa'][1]:.4g} kPa; the pair's total water stayed "
+          f"within {q['total_drift_rel']:.2g} of its start.", "",
+          f"![pair]({rep.link('water-pair.png')})", "",
+          f"Data: [water-pair.csv]({rep.link('water-pair.csv')}).", "")
+
+
+def dry_run(rep, name):
+    """Tissue-wide CSV plus per-cell shape, for the rows at which both tables have a record."""
+    d = read_csv(rep.p(f"{name}/tissue-dry.csv"))
+    cells = dict(T.load_table(rep.p(f"{name}/tissue-dry-cells.dat")))
+    gyr = dict(T.load_table(rep.p(f"{name}/tissue-dry-gyration.dat")))
+    steps = np.rint(d["time_us"] / 0.001).astype(int)
+    sph, el = [], []
+    for k, s in enumerate(steps):
+        if s in cells and s in gyr:
+            a, b = shape(cells[s], gyr[s])
+            sph.append(a.mean())
+            el.append(b.mean())
+        else:
+            sph.append(np.nan)
+            el.append(np.nan)
+    d["sphericity"] = np.array(sph)
+    d["elongation"] = np.array(el)
+    # the share of the wall-enclosed volume the protoplasm fills at the rest density (rho0 = 1)
+    d["fluid_fill"] = d["water_pg"] / d["volume_um3"]
+    return d
+
+
+def fluid_state(pts, cell, fl):
+    """Where the protoplasm is: the share of fluid particles within 2 r0 (6.4 um) of a wall node of
+    their own cell, and the median distance of a fluid particle to its nearest fluid neighbour."""
+    from scipy.spatial import cKDTree
+    near, nn = [], []
+    for c in np.unique(fl[:, 1]):
+        f = fl[fl[:, 1] == c][:, 2:5]
+        w = pts[cell == c]
+        near.append(cKDTree(w).query(f)[0] < 6.4)
+        nn.append(cKDTree(f).query(f, k=2)[0][:, 1])
+    return float(np.mean(np.concatenate(near))), float(np.median(np.concatenate(nn)))
+
+
+def read_vtk_cells(path):
+    """The point field 'cell' of a fix cell/vtk file."""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    i = next(k for k, ln in enumerate(lines) if ln.startswith("SCALARS cell int"))
+    n = int(next(ln for ln in lines if ln.startswith("POINT_DATA")).split()[1])
+    return np.array([int(v) for v in " ".join(lines[i + 2:i + 2 + n]).split()[:n]])
+
+
+def render(rep, d, S):
+    """Walls (VTK, the lower layer's cells cut at mid-height of the block) and the fluid particles
+    in a slice, at a few water contents."""
+    frames = sorted(glob.glob(rep.p("water-dry/dry-walls.*.vtk")), key=lambda f: int(f.split(".")[-2]))
+    if not frames:
+        return None
+    steps = np.array([int(f.split(".")[-2]) for f in frames])
+    wsteps = np.rint(d["time_us"] / 0.001).astype(int)
+    frac = np.interp(steps, wsteps, d["water_fraction"])
+    pick = []
+    for f in FRACTIONS:
+        k = int(np.argmin(np.abs(frac - f)))
+        if k not in pick:
+            pick.append(k)
+    fig = plt.figure(figsize=(3.3 * len(pick), 6.6))
+    S["fluid"] = []
+    for c, k in enumerate(pick):
+        pts, tri = read_vtk(frames[k])
+        ax = fig.add_subplot(2, len(pick), c + 1, projection="3d")
+        from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+        ax.add_collection3d(Poly3DCollection(pts[tri], facecolor="0.75", edgecolor="0.35", linewidth=0.05))
+        lo, hi = pts.min(0), pts.max(0)
+        ax.set_xlim(lo[0], hi[0]); ax.set_ylim(lo[1], hi[1]); ax.set_zlim(lo[2], hi[2])
+        ax.set_box_aspect(hi - lo)
+        ax.view_init(20, 35)
+        ax.set_axis_off()
+        ax.set_title(f"water {frac[k]:.0%}", fontsize=9)
+        # the slice |y - y_mid of the first cell layer| < 3 um: wall nodes and fluid
+        dump = rep.p(f"water-dry/dry-fluid.{steps[k]}.dump")
+        ax2 = fig.add_subplot(2, len(pick), len(pick) + c + 1)
+        yc = lo[1] + 0.25 * (hi[1] - lo[1])
+        sw = np.abs(pts[:, 1] - yc) < 2.0
+        ax2.plot(pts[sw, 0], pts[sw, 2], ".", ms=1.5, color="k")
+        if os.path.exists(dump):
+            fl = read_dump(dump)
+            sf = np.abs(fl[:, 3] - yc) < 8.0
+            ax2.scatter(fl[sf, 2], fl[sf, 4], s=4, c=fl[sf, 1], cmap="tab10", vmin=1, vmax=10)
+            near, nn = fluid_state(pts, read_vtk_cells(frames[k]), fl)
+            S["fluid"].append(dict(water=float(frac[k]), near_wall=near, nn_median_um=nn))
+        ax2.set_aspect("equal")
+        ax2.set_xticks([]); ax2.set_yticks([])
+        ax2.set_title("slice: wall nodes (2 um), fluid by cell (8 um)", fontsize=8)
+    fig.suptitle("in.tissue-dry: the 2x2x2 block (top) and a slice through its first cell layer (bottom)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(rep.fig("water-dry-walls.png"), dpi=90)
+    plt.close(fig)
+    S["picture_water_fractions"] = [float(frac[k]) for k in pick]
+    return "water-dry-walls.png"
+
+
+def fluid_text(S):
+    f = S.get("fluid")
+    if not f:
+        return ""
+    a, b = f[0], f[-1]
+    return (f"The share of fluid particles within 6.4 um (2 r0) of their own wall goes from {a['near_wall']:.0%} at "
+            f"{a['water']:.0%} water to {b['near_wall']:.0%} at {b['water']:.0%}, the median distance to the nearest "
+            f"fluid neighbour from {a['nn_median_um']:.3g} to {b['nn_median_um']:.2g} um: particles collapse onto "
+            "each other, which SPH does not prevent under tension.")
+
+
+def lp_text(q):
+    c = q.get("lp_check")
+    if not c:
+        return "(not run)"
+    dv = max(abs(v["volume_fast"] - v["volume_slow"]) for v in c.values())
+    dp = max(abs(v["turgor_fast"] - v["turgor_slow"]) for v in c.values())
+    q["lp_check_max_volume_diff"], q["lp_check_max_turgor_diff_kPa"] = dv, dp
+    return (f"gives the same enclosed volume to {100 * dv:.2g}% of full turgor's and the same mean pressure to "
+            f"{dp:.2g} kPa at equal water content; the pressure, in the fluid's tension below zero turgor, is "
+            "what the rate changes most")
+
+
+def dry(rep, S):
+    if not os.path.exists(rep.p("water-dry/tissue-dry.csv")):
+        rep.w("### 3. Drying a block", "", "Not run or failed.", "")
+        return
+    d = dry_run(rep, "water-dry")
+    cols = list(d)
+    T.write_csv(rep.fig("water-dry.csv"), d, cols,
+                "in.tissue-dry: 2x2x2 coarse block, Pi0 -364 kPa, solute yes, exchange yes, air at -3000 kPa, Lp 2e-4")
+    slow = dry_run(rep, "water-dry-slow") if os.path.exists(rep.p("water-dry-slow/tissue-dry.csv")) else None
+    x = d["water_fraction"]
+    V0, A0 = d["volume_um3"][0], d["wall_area_um2"][0]
+    L0 = (d["Lx_um"][0] + d["Ly_um"][0] + d["Lz_um"][0]) / 3
+    L = (d["Lx_um"] + d["Ly_um"] + d["Lz_um"]) / 3
+    fig, ax = plt.subplots(2, 3, figsize=(13, 7))
+    a = ax[0, 0]
+    a.plot(x, d["volume_um3"] / V0, label="wall-enclosed volume")
+    a.plot(x, d["wall_area_um2"] / A0, label="wall area")
+    a.plot(x, L / L0, label="block size (mean edge)")
+    a.plot(x, d["fluid_fill"] / d["fluid_fill"][0], "--", label="protoplasm / enclosed volume")
+    a.set_ylabel("/ value at full turgor")
+    a.legend(fontsize=7)
+    a = ax[0, 1]
+    a.plot(x, d["turgor_mean_kPa"], label="mean")
+    a.fill_between(x, d["turgor_min_kPa"], d["turgor_max_kPa"], alpha=0.3, label="min-max of the cells")
+    a.axhline(0, color="k", lw=0.5)
+    a.set_ylabel("turgor (kPa)")
+    a.legend(fontsize=7)
+    a = ax[0, 2]
+    a.plot(x, d["mean_stretch"])
+    a.set_ylabel("mean tether stretch")
+    a = ax[1, 0]
+    a.plot(x, d["sphericity"], label="sphericity")
+    a.plot(x, d["elongation"], label="elongation sqrt(g1/g3)")
+    a.set_ylabel("cell shape (mean of the cells)")
+    a.legend(fontsize=7)
+    a = ax[1, 1]
+    for k, lab in (("Lx_um", "x"), ("Ly_um", "y"), ("Lz_um", "z")):
+        a.plot(x, d[k], label=lab)
+    a.set_ylabel("block size (um)")
+    a.legend(fontsize=7)
+    a = ax[1, 2]
+    a.plot(x, d["turgor_mean_kPa"], label="Lp 2e-4")
+    if slow is not None:
+        a.plot(slow["water_fraction"], slow["turgor_mean_kPa"], "--", label="Lp 1e-4")
+    a.set_ylabel("mean turgor (kPa)")
+    a.legend(fontsize=7)
+    for a in ax.flat:
+        a.set_xlabel("water content (fraction of full turgor)")
+        a.invert_xaxis()
+    fig.tight_layout()
+    fig.savefig(rep.fig("water-dry.png"), dpi=90)
+    plt.close(fig)
+    pic = render(rep, d, S)
+
+    def at(f, key, src=d):
+        o = np.argsort(src["water_fraction"])
+        return float(np.interp(f, src["water_fraction"][o], src[key][o]))
+    FS = (0.9, 0.8, 0.6, 0.4, 0.2)
+    zero = float(x[np.argmax(d["turgor_mean_kPa"] <= 0)]) if np.any(d["turgor_mean_kPa"] <= 0) else None
+    S["dry"] = dict(
+        end_fraction=float(x[-1]), time_us=float(d["time_us"][-1]), water0_pg=float(d["water_pg"][0]),
+        turgor_zero_at_fraction=zero,
+        volume_at={str(f): at(f, "volume_um3") / V0 for f in FS if f >= x[-1] - 1e-3},
+        area_at={str(f): at(f, "wall_area_um2") / A0 for f in FS if f >= x[-1] - 1e-3},
+        size_at={str(f): float(np.interp(f, x[::-1], (L / L0)[::-1])) for f in FS if f >= x[-1] - 1e-3},
+        below=dict(volume=float(np.ptp(d["volume_um3"][x <= 0.9]) / V0),
+                   size=float(np.ptp(L[x <= 0.9]) / L0), area=float(np.ptp(d["wall_area_um2"][x <= 0.9]) / A0),
+                   stretch=[float(d["mean_stretch"][x <= 0.9].min()), float(d["mean_stretch"][x <= 0.9].max())]),
+        turgor_min_kPa=float(np.min(d["turgor_mean_kPa"])), turgor_end_kPa=float(d["turgor_mean_kPa"][-1]),
+        fill_end=float(d["fluid_fill"][-1]), sphericity=[float(d["sphericity"][0]), float(np.nanmin(d["sphericity"])),
+                                                         float(d["sphericity"][-1])],
+        elongation=[float(d["elongation"][0]), float(np.nanmax(d["elongation"])), float(d["elongation"][-1])],
+        broken=int(d["broken"][-1]), debonded=int(d["debonded"][-1]))
+    q = S["dry"]
+    if slow is not None:
+        end = max(float(slow["water_fraction"][-1]), float(x[-1])) - 1e-3
+        fs = [f for f in (0.95, 0.9, 0.85, 0.8, 0.75, 0.7) if f >= end]
+        q["lp_check"] = {str(round(f, 3)): dict(turgor_fast=at(f, "turgor_mean_kPa"), turgor_slow=at(f, "turgor_mean_kPa", slow),
+                                                 volume_fast=at(f, "volume_um3") / V0,
+                                                 volume_slow=at(f, "volume_um3", slow) / V0) for f in fs}
+    T.write_csv(rep.fig("water-dry-slow.csv"), slow, list(slow), "in.tissue-dry, the same block at Lp 1e-4 to 70% water") \
+        if slow is not None else None
+    rep.w("### 3. Drying a block to 20% of its water", "",
+          "`in.tissue-dry` after `in.tissue-inflate` on a 2x2x2 coarse block (Pi0 -364 kPa): the solutes stay in their "
+          "cells (Eq. W1), water crosses the glued faces (Eqs. W2-W3) and leaves through the exposed faces only "
+          "(Eq. W4) to air at psi_ext -3000 kPa (about 98% relative humidity at 20 C), below the cells' potential "
+          "at every water content (Pi0/0.2 = -1820 kPa at 20%). Nothing is imposed on the walls. "
+          f"Water {q['water0_pg']:.4g} pg down to {q['end_fraction']:.1%} in {q['time_us']:.3g} us.", "",
+          "*Rate.* Lp is 2e-4 um/(kPa us), 2e5 times the physical 1e-9, so that the block dries in tens of us "
+          "instead of seconds, and a drag of 100 nN us/um on the wall nodes takes out the walls' ringing (as "
+          "`in.water-potential` does on every particle). The water goes in tens of us, slow against the cells' mechanical response (sound "
+          "crosses a cell in 0.2 us, the inflated walls settle within about 1 us), so the walls stay near the "
+          "equilibrium of their water content. Check: a second run at half the conductivity (Lp 1e-4, to 70%) "
+          + lp_text(q) + ":", "",
+          "| water | turgor Lp 2e-4 (kPa) | turgor Lp 1e-4 (kPa) | volume Lp 2e-4 | volume Lp 1e-4 |",
+          "|---|---|---|---|---|")
+    for f, v in q.get("lp_check", {}).items():
+        rep.w(f"| {float(f):.0%} | {v['turgor_fast']:.4g} | {v['turgor_slow']:.4g} | {v['volume_fast']:.4f} | "
+              f"{v['volume_slow']:.4f} |")
+    z = "-" if q["turgor_zero_at_fraction"] is None else f"{q['turgor_zero_at_fraction']:.0%}"
+    rep.w("", f"![drying]({rep.link('water-dry.png')})", "",
+          *([f"![walls]({rep.link(pic)})", ""] if pic else []),
+          "| water | enclosed volume | wall area | block size |", "|---|---|---|---|",
+          *[f"| {float(f):.0%} | {q['volume_at'][f]:.4f} | {q['area_at'][f]:.4f} | {q['size_at'][f]:.4f} |"
+            for f in q["volume_at"]], "",
+          "(each / its value at full turgor)", "",
+          "*What the model gives.* Turgor goes first: it is gone (mean pressure <= 0) at "
+          f"{z} water, while the wall-enclosed volume has fallen by "
+          f"{100 * (1 - q['volume_at']['0.9']):.2g}% (at 90%): the stiff walls relax to their rest shape and stop "
+          "there. Below zero turgor nothing pulls them further in: the fluid-wall contact (8-4 law, virtual "
+          "particles) only pushes, the lamella holds the cells together at their rest shapes, and the walls carry "
+          "no compression that would buckle them. From 90% water down to "
+          f"{q['end_fraction']:.0%} the enclosed volume varies by {100 * q['below']['volume']:.2g}%, the wall area "
+          f"by {100 * q['below']['area']:.2g}% and the block size by {100 * q['below']['size']:.2g}% of their "
+          f"values at full turgor, the mean tether stretch stays between {q['below']['stretch'][0]:.5f} and "
+          f"{q['below']['stretch'][1]:.5f}: the block stops shrinking and the walls do not wrinkle (pictures). "
+          "The cell shape follows the wall: sphericity "
+          f"{q['sphericity'][0]:.4f} -> {q['sphericity'][-1]:.4f}, elongation {q['elongation'][0]:.4f} -> "
+          f"{q['elongation'][-1]:.4f} (max {q['elongation'][1]:.4f}); broken tethers {q['broken']}, debonded "
+          f"lamella bonds {q['debonded']}.", "",
+          "*Negative turgor: plasmolysis?* The protoplasm goes into tension (mean pressure down to "
+          f"{q['turgor_min_kPa']:.4g} kPa) and, being at about its rest density, fills only "
+          f"{q['fill_end']:.0%} of the enclosed volume at the end. It does not pull away from the wall as one "
+          "body, as a plasmolysing protoplast would (the model has no membrane around it): the SPH fluid under "
+          "tension breaks up into clumps (the tensile instability of SPH) spread through the cell, fewer of them "
+          "on the wall as it dries (slices in the pictures). " + fluid_text(S) + "", "",
+          "*Published trends (qualitative, from general knowledge of drying studies of apple and potato tissue).* "
+          "Turgor is lost early in drying, and cell area and volume then fall steadily with moisture (cells shrink "
+          "and their walls fold; tissue shrinkage of the order of the water lost, less at low moisture). The first "
+          "holds here. The second does not: in plant tissue the protoplast stays attached to the wall as it dries "
+          "in air (the wall collapses with it, cytorrhysis), held by the water in the wall's pores, whereas "
+          "here the wall is pushed but never pulled by the fluid. Shrinkage below zero turgor needs a fluid-wall "
+          "adhesion (or a wall rest shape that follows the water) that the model does not have; we leave it so "
+          "rather than impose it by hand.", "",
+          f"Data: [water-dry.csv]({rep.link('water-dry.csv')})"
+          + (f", [water-dry-slow.csv]({rep.link('water-dry-slow.csv')})" if slow is not None else "") + ".", "")
+
+
+def section(rep):
+    """Append the Water section to rep (a report.Report) and its numbers to rep.S['water']."""
+    S = {}
+    rep.w("## Water", "",
+          "fix cell/fluid with each cell's solutes kept (`solute yes`, Eq. W1), water between glued cells "
+          "(`exchange yes`, Eqs. W2-W3) and the outside through the exposed wall only (`external`, Eq. W4); "
+          "see docs/fix_cell_fluid.rst and docs/Howto_tissue.rst. Made by tools/tissue.sh's water stages "
+          "(`ONLY=\"gen inflate-pair water-potential water-pair water-inflate water-dry water-dry-slow "
+          "report-water\"` runs them alone and writes this section only); wall times, one core per run: "
+          + ", ".join(f"{k} {v[0]} s" for k, v in rep.times.items() if k.startswith("water") or k == "inflate-pair")
+          + ".", "")
+    for part in (potential, pair, dry):
+        try:
+            part(rep, S)
+        except Exception as e:  # report what is there
+            import traceback
+            traceback.print_exc()
+            rep.w(f"({part.__name__}: failed in the report: {e})", "")
+    rep.S["water"] = S
