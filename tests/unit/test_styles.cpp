@@ -426,11 +426,11 @@ TEST_F(Fluid, FixFluidBadInput)
 {
   box();
   EXPECT_ERROR("fix f all cell/fluid Pi -100",
-               "expected 'fix ID group cell/fluid Pi value Lp value'");
+               "expected 'fix ID group cell/fluid Pi value Lp value \\[keyword args");
   EXPECT_ERROR("fix f all cell/fluid Pi 100 Lp 1", "osmotic potential Pi must be <= 0");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Lp -1", "hydraulic conductivity Lp must be >= 0");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Lq 1",
-               "Unknown keyword 'Lq' for fix cell/fluid: expected 'Pi' or 'Lp'");
+               "expected 'Pi value Lp value' \\(in either order\\) first, got 'Pi -100 Lq 1'");
   EXPECT_ERROR("fix f all cell/fluid Pi -100 Pi -1", "expected 'Pi value Lp value'");
   cmds({"fix f all cell/fluid Pi -100 Lp 0", "pair_style zero 3.0", "pair_coeff * *"});
   EXPECT_ERROR("run 0", "Fix cell/fluid requires pair style cell/sph");
