@@ -12,7 +12,8 @@
 #   FALLBACK (a finished coarse run folder whose numbers the report uses for stages missing here),
 #   INPUTS (folder of the input scripts, default lammps-inputs), REPORT (report folder),
 #   WALL (tether, the default | membrane | bending: the wall, lammps-inputs/cell-wall.lmp; the run
-#   folder gets -$WALL), PLUGIN_DIR (folder of cellmechplugin.so, default build/).
+#   folder gets -$WALL; at RES=paper its report is a section of docs/experiments.md beside the
+#   tether numbers, report.py --membrane), PLUGIN_DIR (folder of cellmechplugin.so, default build/).
 set -euo pipefail
 here=${CELLMECH_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 # on a fresh machine, set up first (LAMMPS and the plugin); later runs reuse the build
@@ -143,6 +144,14 @@ stage compress-soft L compress-soft "$INPUTS/in.compress" "${soft[@]}" -var rest
   -var dt 0.002 -var strain 0.2 -var every 500 -var out compress-soft.dat
 
 echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
-want report && $py -m cellmech.experiments.report --run "$out" --res "$RES" --report "$report" \
-  ${FALLBACK:+--fallback "$FALLBACK"}
+# the paper-resolution report in docs/ is the tether wall's: another wall's paper runs go into its
+# own section there, beside the tether numbers (report.py --membrane), instead of replacing it
+if want report; then
+  if [ "$WALL" != tether ] && [ "$RES" = paper ] && [ -z "${REPORT:-}" ]; then
+    $py -m cellmech.experiments.report --membrane "$out" --wall "$WALL" --report "$report"
+  else
+    $py -m cellmech.experiments.report --run "$out" --res "$RES" --report "$report" \
+      ${FALLBACK:+--fallback "$FALLBACK"}
+  fi
+fi
 echo "experiments done: $out"

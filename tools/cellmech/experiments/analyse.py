@@ -152,6 +152,17 @@ def lag(a_imp, a_qs, level):
     return first(a_imp, IMP) - qs
 
 
+def transmitted(a_imp, a_qs, frac=0.2):
+    """The transmitted (bottom-plate) force of an impact beside the quasistatic curve: the level frac
+    of the largest quasistatic force (nN), the lag of the impact in reaching it (lag()), and the mean
+    force of both over eps +- 1% at the largest strain both reach less 1% (eps, f_imp, f_qs)."""
+    level = frac * float(np.max(a_qs[:, CMP["fbot"]]))
+    e_hi = min(float(a_imp[-1, IMP["eps"]]), float(a_qs[-1, CMP["eps"]])) - 0.01
+    return dict(level=level, lag=lag(a_imp, a_qs, level), eps=e_hi,
+                f_imp=window_mean(a_imp[:, IMP["eps"]], a_imp[:, IMP["fbot"]], e_hi, 0.01)[0],
+                f_qs=window_mean(a_qs[:, CMP["eps"]], a_qs[:, CMP["fbot"]], e_hi, 0.01)[0])
+
+
 # ---------------------------------------------------------------- failure
 def read_dump(path):
     """Frames of a LAMMPS dump custom file: list of (step, column names, array)."""

@@ -4,9 +4,13 @@
 sets each result of docs/model.md section 4 beside ours, and the wall time of every run.
 
   report.py --run RUNDIR --res coarse|paper --report REPORTDIR [--fallback COARSE_RUNDIR]
+  report.py --membrane MEMBRANE_RUNDIR --report REPORTDIR
 
 Writes REPORTDIR/experiments.md and REPORTDIR/experiments/*.png. A run that is missing from RUNDIR
-(not finished) is taken from --fallback when given, and marked so in the table.
+(not finished) is taken from --fallback when given, and marked so in the table. --membrane (alone,
+or with --run) writes the section "Membrane wall" (walls.py): relaxation, impact and failure of a
+WALL=membrane run beside the tether numbers of REPORTDIR/experiments.md and the paper's; a report
+written again without it keeps the section it had.
 """
 import argparse
 import math
@@ -17,6 +21,7 @@ import numpy as np
 
 from .. import params
 from . import analyse as A
+from . import walls
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -131,11 +136,27 @@ def pct(ours, paper):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--run", required=True)
+    ap.add_argument("--run")
     ap.add_argument("--res", default="coarse")
     ap.add_argument("--report", required=True)
     ap.add_argument("--fallback")
+    ap.add_argument("--membrane", help="run folder of WALL=membrane tools/experiments.sh: write its "
+                    "section beside the tether numbers of REPORT/experiments.md")
+    ap.add_argument("--wall", default="membrane", choices=walls.WALLS,
+                    help="the wall of the --membrane run (the section's name)")
     args = ap.parse_args()
+    if not args.run and not args.membrane:
+        ap.error("give --run, --membrane or both")
+    if args.run:
+        full_report(args)
+    if args.membrane:
+        lines = walls.section(args.membrane, args.report, label=args.wall)[0]
+        walls.splice(os.path.join(args.report, "experiments.md"), lines, title=walls.title_of(args.wall))
+        print(f"report: section '{walls.title_of(args.wall)[3:]}' of "
+              f"{os.path.join(args.report, 'experiments.md')}")
+
+
+def full_report(args):
     R = Runs(args.run, args.fallback)
     figdir = os.path.join(args.report, "experiments")
     os.makedirs(figdir, exist_ok=True)
@@ -372,11 +393,8 @@ def main():
                 f"transmitted force, {cell} cell, beside the quasistatic curve")
             if q is not None and (cell, 1) in imp:
                 a = imp[(cell, 1)]
-                level = 0.2 * float(np.max(q[:, A.CMP["fbot"]]))
-                lg = A.lag(a, q, level)
-                e_hi = min(float(a[-1, A.IMP["eps"]]), float(q[-1, A.CMP["eps"]])) - 0.01
-                fi = A.window_mean(a[:, A.IMP["eps"]], a[:, A.IMP["fbot"]], e_hi, 0.01)[0]
-                fq = A.window_mean(q[:, A.CMP["eps"]], q[:, A.CMP["fbot"]], e_hi, 0.01)[0]
+                tr = A.transmitted(a, q)
+                level, lg, e_hi, fi, fq = tr["level"], tr["lag"], tr["eps"], tr["f_imp"], tr["f_qs"]
                 rows.append((f"impact {cell}: transmitted force (Fig. {9 if cell == 'stiff' else 10})",
                              "lags, then exceeds the quasistatic force",
                              f"1 mPa s: reaches {level:.3g} nN (20% of the largest quasistatic force) "
@@ -559,8 +577,14 @@ def main():
             L.append(f"| {k} | not finished | " + (f"report uses the coarse run ({fb[0]} s there)" if fb else "") + " |")
     L.append(f"| total | {total} | |\n")
     L.append(open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "notes.md")).read())
-    with open(os.path.join(args.report, "experiments.md"), "w") as f:
+    path = os.path.join(args.report, "experiments.md")
+    # the other wall's section is made from other runs: keep it
+    kept = {w: walls.section_of(path, walls.title_of(w)) for w in walls.WALLS}
+    with open(path, "w") as f:
         f.write("\n".join(L) + "\n")
+    for w, lines in kept.items():
+        if lines:
+            walls.splice(path, lines, title=walls.title_of(w))
     print(f"report: {os.path.join(args.report, 'experiments.md')}")
 
 
