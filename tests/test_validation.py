@@ -38,7 +38,7 @@ def main():
     T.check("validate.sh driver ran", p.returncode == 0, f"rc {p.returncode}")
     summary = json.load(open(os.path.join(d, "validation-summary.json")))
     cases = {c["id"].split("-")[0]: c for c in summary["cases"]}
-    T.check("summary has cases 1-7", sorted(cases) == [str(i) for i in range(1, 8)], f"{sorted(cases)}")
+    T.check("summary has cases 1-8", sorted(cases) == [str(i) for i in range(1, 9)], f"{sorted(cases)}")
     for k, c in sorted(cases.items()):
         keys = all(x in c for x in ("measured", "reference", "rel_error", "resolution", "wall_time_s"))
         res = c["resolution"]
@@ -101,6 +101,10 @@ def main():
     for r in cases["7"]["rows"]:
         T.check(f"7: {r['name']} below {r['tolerance']:g}", r["measured"] < r["tolerance"],
                 f"{r['measured']:.2e}")
+    # 8: the bending wall breathing 20 periods below sigma_c at level 3 (omega to Eq. A5 within
+    # 0.5%, the swing kept within 5%): the rows that carry a tolerance are held to it
+    for r in [x for x in cases["8"]["rows"] if x["tolerance"] is not None]:
+        within(f"8: {r['name']}", r, r["tolerance"])
     T.finish()
 
 

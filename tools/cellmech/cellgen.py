@@ -355,8 +355,22 @@ def build_cells(args):
              f"{nf} fluid per cell, R {R:g}, spacing {spacing:.10g}, rho0 {rho0:g}, "
              f"wall mass {wall_mass:.6g}, units {args.units}")
     rho = [rho0 if a[1] == 2 else 0.0 for a in atoms]
+    rmass = None
+    if args.wall_mass_by_area:
+        # equal node masses give the geodesic wall a surface density that varies by -23..+20% in
+        # an icosahedral pattern (the node areas do), which the breathing mode drives out of round;
+        # a third of each adjacent triangle's area per node makes the density uniform, as a tissue's
+        trib = np.zeros(nw)
+        ta = 0.5 * np.linalg.norm(np.cross(nodes[tri[:, 1]] - nodes[tri[:, 0]],
+                                           nodes[tri[:, 2]] - nodes[tri[:, 0]]), axis=1)
+        for k in range(3):
+            np.add.at(trib, tri[:, k], ta / 3.0)
+        node_mass = wall_mass * trib / trib.sum()
+        rmass = [node_mass[(i - 1) % (nw + nf)] if a[1] == 1 else m_fluid
+                 for i, a in enumerate(atoms, 1)]
+        title += ", wall mass by area"
     write_data(args.output, title, box, atoms, bonds, angles, [m_wall, m_fluid], refs, rho,
-               bending=args.bending)
+               rmass=rmass, bending=args.bending)
     print(title)
     print(f"wall node mass {m_wall:.6g}, fluid particle mass {m_fluid:.6g}, "
           f"mesh area {area:.6g}, mesh volume {volume:.6g}, mean tether {mean_edge:.6g}")
@@ -897,6 +911,9 @@ def main(argv=None):
     w = c.add_mutually_exclusive_group()
     w.add_argument("--wall-mass", type=number(above=0), help="total wall mass of a cell (default 1.3e4 pg)")
     w.add_argument("--wall-areal-density", type=number(above=0), help="rho_s t0 (mass per wall area)")
+    c.add_argument("--wall-mass-by-area", action="store_true",
+                   help="wall node masses in proportion to their share of the wall area (uniform "
+                        "surface density) instead of equal")
     c.add_argument("--pad", type=number(minimum=0), help="box padding around the cells (10 um)")
     c.add_argument("--box", type=number(), nargs=6)
     c.add_argument("--units", choices=sorted(UNITS), default="micro")

@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Reading the measured quantity out of a run's time series (shared by the validation cases and
 the tests)."""
+import math
+
 import numpy as np
 
 
@@ -71,3 +73,54 @@ def sheet_membrane_width(path, orient):
     area = sum(0.5 * abs((pos[b][0] - pos[a][0]) * (pos[c][1] - pos[a][1]) -
                          (pos[b][1] - pos[a][1]) * (pos[c][0] - pos[a][0])) for a, b, c in tri)
     return float(area / np.ptp(xy[:, 0]))
+
+
+def read_dump_frames(path):
+    """Frames of a LAMMPS `dump custom ... id x y z` sorted by id: [(step, xyz (N x 3))]."""
+    frames, lines = [], open(path).read().split("\n")
+    i = 0
+    while i < len(lines) and lines[i].startswith("ITEM: TIMESTEP"):
+        step, n = int(lines[i + 1]), int(lines[i + 3])
+        rows = np.array([l.split() for l in lines[i + 9:i + 9 + n]], dtype=float)
+        frames.append((step, rows[np.argsort(rows[:, 0]), 1:4]))
+        i += 9 + n
+    return frames
+
+
+def degree_spectrum(xyz, lmax):
+    """Power per spherical-harmonic degree l = 0..lmax of the radial displacement r - mean(r) of
+    nodes spread evenly over a sphere centred at the origin (a geodesic wall: equal quadrature
+    weights 4 pi / N, accurate for l well below the mesh's resolution, about sqrt(N)). The fully
+    normalised associated Legendre functions come from the standard recurrences in l at fixed m
+    (stable, one pass per m)."""
+    r = np.linalg.norm(xyz, axis=1)
+    f = (r - r.mean()) * (4 * math.pi / len(r))
+    x = xyz[:, 2] / r
+    sx = np.sqrt(np.maximum(0.0, 1 - x * x))
+    ph = np.arctan2(xyz[:, 1], xyz[:, 0])
+    out = np.zeros(lmax + 1)
+    pmm = np.full_like(x, math.sqrt(1 / (4 * math.pi)))
+    for m in range(lmax + 1):
+        if m > 0:
+            pmm = -math.sqrt((2 * m + 1) / (2 * m)) * sx * pmm
+        # real harmonics: sqrt2 cos(m phi), sqrt2 sin(m phi) for m > 0
+        parts = [f] if m == 0 else [math.sqrt(2) * f * np.cos(m * ph), math.sqrt(2) * f * np.sin(m * ph)]
+        p2, p1 = None, pmm
+        for l in range(m, lmax + 1):
+            if l == m + 1:
+                p2, p1 = p1, math.sqrt(2 * m + 3) * x * p1
+            elif l > m + 1:
+                a = math.sqrt((4 * l * l - 1) / (l * l - m * m))
+                b = math.sqrt(((l - 1) ** 2 - m * m) / (4 * (l - 1) ** 2 - 1))
+                p2, p1 = p1, a * (x * p1 - b * p2)
+            out[l] += sum(float(np.dot(g, p1)) ** 2 for g in parts)
+    return out
+
+
+def buckle_wavelength(power, R):
+    """Wavelength 2 pi R / sqrt(l (l + 1)) of the power-weighted mean degree over l >= 2 (l = 0 is
+    the breathing, l = 1 a rigid shift), and that mean degree."""
+    l = np.arange(len(power))
+    sel = l >= 2
+    lbar = float((l[sel] * power[sel]).sum() / power[sel].sum())
+    return 2 * math.pi * R / math.sqrt(lbar * (lbar + 1)), lbar

@@ -11,6 +11,7 @@ import numpy as np
 from .common import (C_PHYS, INPUTS, LEVELS, M_WALL, R0, RHO0, SOFT, STIFF, T_INFLATE, model_vars,
                     resolution)
 from . import analysis
+from . import bending
 from . import references as ref
 
 COMPRESS_STRAINS = (0.05, 0.10, 0.15, 0.20)
@@ -547,4 +548,5 @@ CASES = {
     "5": case_compression,
     "6": case_resolution,
     "7": case_energy,
+    "8": bending.case_bending_shell,
 }

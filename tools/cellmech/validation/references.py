@@ -98,3 +98,39 @@ def observed_order(f1, f2, f3, ratio=2.0):
         return None, None
     p = math.log(abs(d1 / d2)) / math.log(ratio)
     return p, f3 + (f3 - f2) / (ratio ** p - 1)
+
+
+def membrane_mesh_factor(level):
+    """omega / omega_A5 of the membrane wall (angle_style cell/membrane) in its uniform radial mode
+    with node masses by area (cellgen --wall-mass-by-area): its energy is that of the inscribed
+    polyhedron's area, sum A0 W(lam), where the continuum shell has 4 pi R^2 W(lam), so the ratio
+    is sqrt(sum A0 / (4 pi R^2)) (0.99940 at level 4). The hinges store nothing in it (uniform
+    scaling keeps every dihedral angle)."""
+    from .. import cellgen
+    nodes, tri, _ = cellgen.icosphere(level)
+    a = np.cross(nodes[tri[:, 1]] - nodes[tri[:, 0]], nodes[tri[:, 2]] - nodes[tri[:, 0]])
+    return math.sqrt(0.5 * np.linalg.norm(a, axis=1).sum() / (4 * math.pi))
+
+
+# Classical buckling of a spherical shell, Eqs. S1, S2, S4, S5 of src/cell_physics.h (derived and
+# unit-tested there; these are the same formulas for the Python side): radius R, thickness t,
+# modulus E, Poisson ratio nu (the wall: E = 3G, nu = 1/2).
+
+def shell_critical_stress(E, t, R, nu=0.5):
+    """Eq. S1: sigma_c = E t / (R sqrt(3 (1 - nu^2)))."""
+    return E * t / (R * math.sqrt(3 * (1 - nu * nu)))
+
+
+def shell_critical_strain(t, R, nu=0.5):
+    """Eq. S2: the equibiaxial strain of sigma_c, (1 - nu) sigma_c / E (t / (3R) for nu = 1/2)."""
+    return (1 - nu) * t / (R * math.sqrt(3 * (1 - nu * nu)))
+
+
+def shell_buckle_wavelength(t, R, nu=0.5):
+    """Eq. S4: lambda_c = 2 pi sqrt(R t) / (12 (1 - nu^2))^(1/4)."""
+    return 2 * math.pi * math.sqrt(R * t) / (12 * (1 - nu * nu)) ** 0.25
+
+
+def shell_fastest_wavelength(t, R, a, nu=0.5):
+    """Eq. S5: the fastest-growing buckle at a compressive stress a >= 1 times sigma_c."""
+    return shell_buckle_wavelength(t, R, nu) / math.sqrt(a)
