@@ -128,7 +128,7 @@ def case_bending_shell(run, level, ctx):
     e.add("  mean radius of the last period - R, per swing", b["drift"] / b["swing_first"], None)
     for tag in ("tether", "bending, equal masses"):
         r = recs[tag]
-        e.add(f"  {tag}: omega vs Eq. A5 (none: R no longer crossed)", r["omega"], w5, "rad/us")
+        e.add(f"  {tag}: omega vs Eq. A5 (blank: mean radius no longer crosses R)", r["omega"], w5, "rad/us")
         e.add(f"  {tag}: largest rms of node radii / swing", r["rms_max"] / r["swing_first"], None)
         e.add(f"  {tag}: swing in the last period / first", r["swing_last"] / r["swing_first"], 1.0)
         e.add(f"  {tag}: mean radius of the last period - R, per swing", r["drift"] / r["swing_first"], None)
