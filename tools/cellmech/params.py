@@ -37,6 +37,8 @@ LEVELS = {
 }
 # the resolutions the experiment and validation scripts name
 RES_LEVEL = {"coarse": 3, "paper": 4, "study": 4, "fine": 5}
+# the walls of lammps-inputs/cell-wall.lmp (-var wall), the paper's tethers first (the default)
+WALLS = ("tether", "membrane", "bending")
 
 # The cell around the force field (paper Table I and Sec. III): unstressed radius R, wall mass,
 # turgor P of the stiff cell; the soft wall (E = 20 MPa, t0 = 5 nm) at its turgor of 0.1 kPa.

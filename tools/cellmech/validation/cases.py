@@ -338,6 +338,10 @@ def case_compression(run, level, ctx):
               "higher turgor is stiffer at small strain, curves parallel at large strain (Fig. 5)",
               resolution(level))
     half = window_half(level)
+    # the membrane walls are the Neo-Hookean sheet the reference solves, so they must meet it to 5%
+    # at level 4 (the rate dependence at 0.5 m/s is 1.5%, docs/experiments.md); the tethers have
+    # 1.5x its shear modulus (docs/membrane.rst) and are compared, not judged
+    tol = None if run.wall == "tether" else 0.05
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6, 4.2))
     missing = False
@@ -355,11 +359,17 @@ def case_compression(run, level, ctx):
         net, _ = membrane_reference(st["P"], fine, rho, material="network")
         for x, s in zip(Fw, COMPRESS_STRAINS):
             r = None if mem is None else mem[int(round(s / 0.01)) - 1]
-            e.add(f"P={P:g}: F at eps {s:.2f}", x, r, "nN", tol=None, group=f"P{P:g}")
+            e.add(f"P={P:g}: F at eps {s:.2f}", x, r, "nN", tol=tol, group=f"P{P:g}")
         for x, s in zip(Fw, COMPRESS_STRAINS):
             r = None if net is None else net[int(round(s / 0.01)) - 1]
             e.add(f"P={P:g}: F at eps {s:.2f} vs network law", x, r, "nN", tol=None,
                   group=f"P{P:g}-network")
+        a = np.loadtxt(run.path(f"compress-L{level}-P{P:g}.dat"), ndmin=2)
+        if a.shape[1] >= 11:       # the volumes (in.compress columns 10, 11; older runs lack them)
+            k = int(np.argmin(abs(a[:, 2] - COMPRESS_STRAINS[-1])))
+            for j, what in ((9, "volume the wall encloses"), (10, "fluid volume sum m/rho")):
+                e.add(f"P={P:g}: {what}, change at eps {a[k, 2]:.2f}", a[k, j] / a[0, j] - 1, None,
+                      group=f"P{P:g}-volume")
         ax.plot(eps, F * 1e-3, f"C{i}-", lw=1, label=f"P = {P:g} kPa (sim)")
         ax.plot(COMPRESS_STRAINS, Fw * 1e-3, f"C{i}o", ms=4)
         if mem is not None:
@@ -539,6 +549,10 @@ def case_energy(run, level, ctx):
            f"(x{scale:g} here).")
     return e
 
+
+# cases that run the tethers and the membrane wall side by side themselves, whatever WALL is: the
+# report's walls-side-by-side section leaves them out
+BOTH_WALLS = ("3", "4")
 
 CASES = {
     "1": case_breathing_vacuo,

@@ -8,12 +8,14 @@ Environment:
          (default results/validation-RES; docs/ for RES=paper)
   WORK   folder for the LAMMPS runs (default results/validation-RES/work); runs already done there
          with the same settings are reused
-  CASES  which cases, e.g. "1,2,5" (default all: 1-7)
+  CASES  which cases, e.g. "1,2,5" (default all: 1-8)
   STUDY_LEVELS  levels of the resolution study (default "3 4 5")
   NP     MPI ranks per LAMMPS run (default 1)
   WALL   the wall of every run (lammps-inputs/cell-wall.lmp): tether (default) | membrane |
-         bending; OUT and WORK then default to results/validation-RES-WALL. Cases 3 and 4
-         (Young-Laplace, sheet) run the tethers and the membrane side by side whatever WALL is.
+         bending; OUT and WORK then default to results/validation-RES-WALL (RES=paper: OUT
+         docs/validation-WALL). Cases 3 and 4 (Young-Laplace, sheet) run the tethers and the
+         membrane side by side whatever WALL is; the report of either wall at RES=paper sets the
+         other wall's committed report beside it (section "The walls side by side").
 """
 import json
 import os
@@ -22,16 +24,17 @@ import sys
 import time
 import traceback
 
-from ..params import RES_LEVEL, ROOT
+from ..params import RES_LEVEL, ROOT, WALLS
 
 
 def main():
     res = os.environ.get("RES", "coarse")
     wall = os.environ.get("WALL", "tether")
-    if wall not in ("tether", "membrane", "bending"):
-        sys.exit(f"validate: WALL must be tether, membrane or bending, got {wall}")
+    if wall not in WALLS:
+        sys.exit(f"validate: WALL must be one of {', '.join(WALLS)}, got {wall}")
     tag = "" if wall == "tether" else f"-{wall}"
     default_out = (os.path.join(ROOT, "docs") if res == "paper" and not tag else
+                   os.path.join(ROOT, "docs", f"validation{tag}") if res == "paper" else
                    os.path.join(ROOT, "results", f"validation-{res}{tag}"))
     out = os.path.abspath(os.environ.get("OUT", default_out))
     work = os.path.abspath(os.environ.get("WORK", os.path.join(ROOT, "results", f"validation-{res}{tag}", "work")))
@@ -63,7 +66,7 @@ def main():
     entries = {}
     try:
         old = json.load(open(summary_path))
-        if old.get("res") == res:
+        if (old.get("res"), old.get("wall", "tether")) == (res, wall):
             entries = {e["id"].split("-")[0]: e for e in old["cases"]}
     except (OSError, ValueError, KeyError):
         pass
@@ -74,14 +77,15 @@ def main():
         # other cases): keep its entries for the cases this one does not run
         try:
             disk = json.load(open(summary_path))
-            if disk.get("res") == res:
+            if (disk.get("res"), disk.get("wall", "tether")) == (res, wall):
                 for x in disk["cases"]:
                     k = x["id"].split("-")[0]
                     if k not in wanted:
                         entries[k] = x
         except (OSError, ValueError, KeyError):
             pass
-        report.write(out, res, level, [entries[k] for k in sorted(entries)], time.time() - t_all)
+        report.write(out, res, level, [entries[k] for k in sorted(entries)], time.time() - t_all,
+                     wall=wall, others=report.other_walls(res, wall))
 
     for cid in wanted:
         fn = cases.CASES[cid]
