@@ -172,16 +172,18 @@ static bool same_bond(const Event &a, const Event &b)
 /* ----------------------------------------------------------------------
    Every rank must update its own atoms' special lists and decide the same
    re-neighboring, so the debonds of a step are gathered from all ranks.
-   Which ranks have any is only known after one reduction of a single int
-   per force call (as for tethers; a lamella can always debond); the
-   gathers follow only in the rare steps that have debonds.
+   On more than one rank, which ranks have any is only known after one
+   reduction of a single int per force call (as for tethers; a lamella can
+   always debond); the gathers follow only in the rare steps that have
+   debonds. One rank makes no MPI call.
 ------------------------------------------------------------------------- */
 
 void BondCellLamella::process_debonds()
 {
   const int nmine = (int) debonded.size();
-  int nall = 0;
-  MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
+  // one rank has nobody to tell: no collective call in the (many) steps without a debond
+  int nall = nmine;
+  if (comm->nprocs > 1) MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
   if (nall == 0) return;
 
   const int nprocs = comm->nprocs;

@@ -136,17 +136,27 @@ inline double kernel_w(double r, double s)
   return 0.0;
 }
 
-// dW/dr; the gradient is dW/dr times the unit vector r_ij / r.
-inline double kernel_dwdr(double r, double s)
+// dW/dr; the gradient is dW/dr times the unit vector r_ij / r. Its prefactor depends on s only: a
+// pair loop computes it once per type pair (kernel_dwdr_norm) and passes it, with the same bits.
+inline double kernel_dwdr_norm(double s)
+{
+  return 3.0 / (2.0 * M_PI * s * s * s * s);
+}
+
+inline double kernel_dwdr(double r, double s, double norm)
 {
   const double q = r / s;
-  const double norm = 3.0 / (2.0 * M_PI * s * s * s * s);
   if (q < 1.0) return norm * (-2.0 * q + 1.5 * q * q);
   if (q < 2.0) {
     const double u = 2.0 - q;
     return -norm * 0.5 * u * u;
   }
   return 0.0;
+}
+
+inline double kernel_dwdr(double r, double s)
+{
+  return kernel_dwdr(r, s, kernel_dwdr_norm(s));
 }
 
 // Tait equation of state with background turgor P0 (Eq. 6), kappa = rho0 c^2 / 7.

@@ -45,7 +45,8 @@ using namespace CellPhysics;
 
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
-    irho(-1), idrho(-1), nmax(0), prho2(nullptr), pairs_step(-1), pairs_build(-1), pairs_nall(-1)
+    wnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1), pairs_build(-1),
+    pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr), maxfirst(0), maxpair(0)
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -55,7 +56,10 @@ PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
 
 PairCellSPH::~PairCellSPH()
 {
-  memory->destroy(prho2);
+  memory->destroy(quant);
+  memory->destroy(pair_first);
+  memory->destroy(pair_j);
+  memory->destroy(pair_wr);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -65,6 +69,7 @@ PairCellSPH::~PairCellSPH()
     memory->destroy(P0);
     memory->destroy(mu);
     memory->destroy(s);
+    memory->destroy(wnorm);
   }
 }
 
@@ -90,36 +95,79 @@ double *PairCellSPH::drho_array() const
 
 /* ---------------------------------------------------------------------- */
 
-template <class F> void PairCellSPH::for_each_fluid_pair(F &&f)
+template <bool CONTINUITY> void PairCellSPH::find_pairs()
 {
-  double **x = atom->x;
-  int *type = atom->type;
+  // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
+  const double *const x = atom->x ? atom->x[0] : nullptr;
+  const double *const v = atom->v ? atom->v[0] : nullptr;
+  const double *const rmass = atom->rmass;
+  const int *const type = atom->type;
+  double *const drho = atom->dvector[idrho];
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
   // the protoplasm of one cell never meets another cell's through SPH, even where two particles
   // are within the kernel's support across two walls (a tissue): the walls between them are
   // closed, so no pressure, viscosity or density rate may cross. One molecule ID per cell.
-  const tagint *molecule = atom->molecule;
-  int *ilist = list->ilist;
-  int *numneigh = list->numneigh;
+  const tagint *const molecule = atom->molecule;
+  const int inum = list->inum;
+  const int *const ilist = list->ilist;
+  const int *const numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
-  for (int ii = 0; ii < list->inum; ii++) {
+
+  if (inum + 1 > maxfirst) {
+    maxfirst = inum + 1;
+    memory->destroy(pair_first);
+    memory->create(pair_first, maxfirst, "pair:pair_first");
+  }
+  int npair = 0;
+  for (int ii = 0; ii < inum; ii++) {
+    pair_first[ii] = npair;
     const int i = ilist[ii];
     const int itype = type[i];
     if (!fluid[itype]) continue;
-    int *jlist = firstneigh[i];
-    for (int jj = 0; jj < numneigh[i]; jj++) {
+    const int *const jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    // room for every neighbour, so the inner loop does not check
+    if (npair + jnum > maxpair) {
+      maxpair = MAX(npair + jnum, 2 * maxpair);
+      memory->grow(pair_j, maxpair, "pair:pair_j");
+      memory->grow(pair_wr, maxpair, "pair:pair_wr");
+    }
+    const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
+    const double vxi = v[3 * i], vyi = v[3 * i + 1], vzi = v[3 * i + 2];
+    const double mi = rmass[i];
+    const tagint moli = molecule ? molecule[i] : 0;
+    const double *const cutsqi = cutsq[itype];
+    const double *const si = s[itype];
+    const double *const normi = wnorm[itype];
+    // i's sum in a register: no neighbour is i itself, and starting from what earlier particles
+    // added keeps the order of additions, and so every bit, of adding to drho[i] pair by pair
+    double drhoi = CONTINUITY ? drho[i] : 0.0;
+    for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const int jtype = type[j];
       if (!fluid[jtype]) continue;
-      if (molecule && molecule[i] != molecule[j]) continue;
-      const double delx = x[i][0] - x[j][0];
-      const double dely = x[i][1] - x[j][1];
-      const double delz = x[i][2] - x[j][2];
+      if (molecule && molecule[j] != moli) continue;
+      const double delx = xi - x[3 * j];
+      const double dely = yi - x[3 * j + 1];
+      const double delz = zi - x[3 * j + 2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsq[itype][jtype]) continue;
+      if (rsq >= cutsqi[jtype]) continue;
       const double r = sqrt(rsq);
-      f(i, j, kernel_dwdr(r, s[itype][jtype]) / r, delx, dely, delz);
+      const double wr = kernel_dwdr(r, si[jtype], normi[jtype]) / r;
+      pair_j[npair] = j;
+      pair_wr[npair] = wr;
+      npair++;
+      if (CONTINUITY) {
+        const double vdotw = continuity_term(vxi - v[3 * j], vyi - v[3 * j + 1], vzi - v[3 * j + 2],
+                                             delx, dely, delz, wr);
+        drhoi += rmass[j] * vdotw;
+        if (newton_pair || j < nlocal) drho[j] += mi * vdotw;
+      }
     }
+    if (CONTINUITY) drho[i] = drhoi;
   }
+  pair_first[inum] = npair;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -131,8 +179,6 @@ void PairCellSPH::compute(int eflag, int vflag)
   // fix cell/fluid advanced density and mass in pre_force: refresh the ghosts
   comm->forward_comm(this);
 
-  double **v = atom->v;
-  double **f = atom->f;
   double *rmass = atom->rmass;
   int *type = atom->type;
   double *rho = atom->dvector[irho];
@@ -142,57 +188,81 @@ void PairCellSPH::compute(int eflag, int vflag)
 
   if (atom->nmax > nmax) {
     nmax = atom->nmax;
-    memory->destroy(prho2);
-    memory->create(prho2, nmax, "pair:prho2");
+    memory->destroy(quant);
+    memory->create(quant, NQUANT * nmax, "pair:quant");
   }
 
-  // quantities of one particle only: once per particle, not per pair
+  // quantities of one particle only: once per particle, not per pair, side by side for the
+  // pair loop's gathers: P / rho^2, m, rho, mu
   for (int i = 0; i < nall; i++) {
     const int t = type[i];
+    double *const q = quant + NQUANT * i;
     if (fluid[t]) {
-      prho2[i] = pressure(t, rho[i]) / (rho[i] * rho[i]);
+      q[0] = pressure(t, rho[i]) / (rho[i] * rho[i]);
+      q[1] = rmass[i];
+      q[2] = rho[i];
+      q[3] = mu[t];
       if (i < nlocal && eflag) {
         const double ei = rmass[i] * tait_internal_energy(rho[i], rho0[t], c[t], P0[t]);
         if (eflag_global) eng_vdwl += ei;
         if (eflag_atom) eatom[i] += ei;
       }
     } else
-      prho2[i] = 0.0;
+      q[0] = q[1] = q[2] = q[3] = 0.0;
   }
 
-  // the force of one interacting pair, with grad_i W = wr * del
-  auto interact = [&](int i, int j, double wr, double delx, double dely, double delz) {
-    const int itype = type[i], jtype = type[j];
-    const double mi = rmass[i];
-    const double mj = rmass[j];
-    const double dvx = v[i][0] - v[j][0];
-    const double dvy = v[i][1] - v[j][1];
-    const double dvz = v[i][2] - v[j][2];
+  // the pairs of fix cell/fluid's continuity pass at these positions, or a search of our own
+  if (!pairs_of_continuity()) find_pairs<false>();
 
-    // Eq. 5: pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
-    const double fp = sph_pressure_fpair(mi, mj, prho2[i], prho2[j], wr);
-    const double fv = sph_viscous_fvel(mi, mj, mu[itype], mu[jtype], rho[i], rho[j], wr);
-    const double fx = fp * delx + fv * dvx;
-    const double fy = fp * dely + fv * dvy;
-    const double fz = fp * delz + fv * dvz;
+  const double *const x = atom->x ? atom->x[0] : nullptr;
+  const double *const vf = atom->v ? atom->v[0] : nullptr;
+  double *const ff = atom->f ? atom->f[0] : nullptr;
+  const int *const ilist = list->ilist;
+  const int inum = list->inum;
+  for (int ii = 0; ii < inum; ii++) {
+    const int kend = pair_first[ii + 1];
+    if (pair_first[ii] == kend) continue;
+    const int i = ilist[ii];
+    const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
+    const double vxi = vf[3 * i], vyi = vf[3 * i + 1], vzi = vf[3 * i + 2];
+    const double *const qi = quant + NQUANT * i;
+    const double prho2i = qi[0], mi = qi[1], rhoi = qi[2], mui = qi[3];
+    // as drho[i] in find_pairs: the same additions in the same order, in registers
+    double fxi = ff[3 * i], fyi = ff[3 * i + 1], fzi = ff[3 * i + 2];
+    for (int k = pair_first[ii]; k < kend; k++) {
+      const int j = pair_j[k];
+      const double wr = pair_wr[k];
+      const double *const qj = quant + NQUANT * j;
+      const double mj = qj[1];
+      // the same differences as in the search, so the same bits
+      const double delx = xi - x[3 * j];
+      const double dely = yi - x[3 * j + 1];
+      const double delz = zi - x[3 * j + 2];
+      const double dvx = vxi - vf[3 * j];
+      const double dvy = vyi - vf[3 * j + 1];
+      const double dvz = vzi - vf[3 * j + 2];
 
-    f[i][0] += fx;
-    f[i][1] += fy;
-    f[i][2] += fz;
-    if (newton_pair || j < nlocal) {
-      f[j][0] -= fx;
-      f[j][1] -= fy;
-      f[j][2] -= fz;
+      // Eq. 5: pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
+      const double fp = sph_pressure_fpair(mi, mj, prho2i, qj[0], wr);
+      const double fv = sph_viscous_fvel(mi, mj, mui, qj[3], rhoi, qj[2], wr);
+      const double fx = fp * delx + fv * dvx;
+      const double fy = fp * dely + fv * dvy;
+      const double fz = fp * delz + fv * dvz;
+
+      fxi += fx;
+      fyi += fy;
+      fzi += fz;
+      if (newton_pair || j < nlocal) {
+        ff[3 * j] -= fx;
+        ff[3 * j + 1] -= fy;
+        ff[3 * j + 2] -= fz;
+      }
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
-    if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
-  };
-
-  if (pairs_of_continuity()) {
-    for (std::size_t k = 0; k < pair_i.size(); k++)
-      interact(pair_i[k], pair_j[k], pair_wr[k], pair_del[3 * k], pair_del[3 * k + 1],
-               pair_del[3 * k + 2]);
-  } else
-    for_each_fluid_pair(interact);
+    ff[3 * i] = fxi;
+    ff[3 * i + 1] = fyi;
+    ff[3 * i + 2] = fzi;
+  }
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -205,8 +275,6 @@ void PairCellSPH::compute(int eflag, int vflag)
 
 void PairCellSPH::continuity()
 {
-  double **v = atom->v;
-  double *rmass = atom->rmass;
   double *drho = atom->dvector[idrho];
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
@@ -214,24 +282,10 @@ void PairCellSPH::continuity()
   for (int i = 0; i < (newton_pair ? nall : nlocal); i++) drho[i] = 0.0;
 
   // keep the interacting pairs for the force call that follows at the same positions
-  pair_i.clear();
-  pair_j.clear();
-  pair_wr.clear();
-  pair_del.clear();
   pairs_step = update->ntimestep;
   pairs_build = neighbor->ncalls;
   pairs_nall = nall;
-
-  for_each_fluid_pair([&](int i, int j, double wr, double delx, double dely, double delz) {
-    pair_i.push_back(i);
-    pair_j.push_back(j);
-    pair_wr.push_back(wr);
-    pair_del.insert(pair_del.end(), {delx, dely, delz});
-    const double vdotw = continuity_term(v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2],
-                                         delx, dely, delz, wr);
-    drho[i] += rmass[j] * vdotw;
-    if (newton_pair || j < nlocal) drho[j] += rmass[i] * vdotw;
-  });
+  find_pairs<true>();
   if (newton_pair) comm->reverse_comm(this);
 }
 
@@ -268,6 +322,7 @@ void PairCellSPH::allocate()
   memory->create(setflag, np1, np1, "pair:setflag");
   memory->create(cutsq, np1, np1, "pair:cutsq");
   memory->create(s, np1, np1, "pair:s");
+  memory->create(wnorm, np1, np1, "pair:wnorm");
   memory->create(fluid, np1, "pair:fluid");
   memory->create(rho0, np1, "pair:rho0");
   memory->create(c, np1, "pair:c");
@@ -445,6 +500,7 @@ double PairCellSPH::init_one(int i, int j)
     error->all(FLERR, "Pair style cell/sph: types {} and {} are not both fluid types", i, j);
   if (setflag[i][j] == 0) s[i][j] = 0.5 * (s[i][i] + s[j][j]);
   s[j][i] = s[i][j];
+  wnorm[i][j] = wnorm[j][i] = kernel_dwdr_norm(s[i][j]);
   return 2.0 * s[i][j];
 }
 
@@ -566,5 +622,6 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
 
 double PairCellSPH::memory_usage()
 {
-  return Pair::memory_usage() + (double) nmax * sizeof(double);
+  return Pair::memory_usage() + (double) NQUANT * nmax * sizeof(double) +
+      (double) maxfirst * sizeof(int) + (double) maxpair * (sizeof(int) + sizeof(double));
 }

@@ -16,8 +16,6 @@ PairStyle(cell/sph,PairCellSPH);
 
 #include "pair.h"
 
-#include <vector>
-
 namespace LAMMPS_NS {
 
 class PairCellSPH : public Pair {
@@ -55,22 +53,28 @@ class PairCellSPH : public Pair {
   int *fluid;                    // per type: 1 if a fluid type (pair_coeff I I set)
   double *rho0, *c, *P0, *mu;    // per type
   double **s;                    // per type pair: smoothing length (cutoff 2s)
+  double **wnorm;                // per type pair: kernel_dwdr_norm(s)
   int irho, idrho;               // indices of d_rho, d_drho in atom->dvector
   int nmax;
-  double *prho2;    // P / rho^2 of local and ghost atoms, once per step
-  // interacting pairs found by continuity() at this step's positions, reused by compute():
-  // the step, and the neighbour-list build and atom count they were found with
+  // per local and ghost atom, once per step: P / rho^2, m, rho, mu
+  static constexpr int NQUANT = 4;
+  double *quant;
+  // the interacting fluid pairs of the neighbour list (within 2s, same cell) as a compact list:
+  // those of ilist[ii] are pair_j[k], pair_wr[k] (grad_i W = wr r_ij) for k in
+  // pair_first[ii] .. pair_first[ii + 1] - 1. Found by continuity() at this step's positions and
+  // reused by compute(): the step, and the neighbour-list build and atom count they were found with
   bigint pairs_step, pairs_build;
   int pairs_nall;
-  std::vector<int> pair_i, pair_j;
-  std::vector<double> pair_wr, pair_del;
+  int *pair_first, *pair_j;
+  double *pair_wr;
+  int maxfirst, maxpair;
 
   void allocate();
   bool pairs_of_continuity();
 
-  // calls f(i, j, wr, delx, dely, delz) for every fluid-fluid pair of the neighbour list within
-  // the kernel support, with grad_i W_ij = wr * del: the one loop both passes share
-  template <class F> void for_each_fluid_pair(F &&f);
+  // the one neighbour-list search both passes share: fills the pair list and, with CONTINUITY,
+  // adds each pair's continuity terms (Eq. 7) to d_drho
+  template <bool CONTINUITY> void find_pairs();
 };
 
 }    // namespace LAMMPS_NS

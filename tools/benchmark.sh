@@ -12,7 +12,11 @@
 # (stock takes it as its h), dt 0.001 us, units micro, no wall, no turgor, no osmosis; the script
 # checks that their "Ave neighs/atom" agree. Rates are atoms * steps / loop time from LAMMPS's
 # "Loop time" line (the figure behind its "Matom-step/s"); each case runs REPEAT times and the
-# fastest run is kept (the other runs only guard against a busy machine).
+# fastest run is kept (the other runs only guard against a busy machine). On a shared machine the
+# wall-clock rate also measures the others' load, so the table adds the rate per CPU second
+# (loop time x LAMMPS's "% CPU use": the time the rank actually ran), the best over the runs of a
+# case, and its ratio to stock. Memory: LAMMPS's "Per MPI rank memory allocation" (average over
+# ranks, MiB as LAMMPS counts them) x ranks / atoms, in bytes per particle.
 #
 # Usage: tools/benchmark.sh [-np N] [-r REPEAT] [-n NSTEPS] [-k]
 #   -np N      MPI ranks (N > 1 runs it through mpi_run, tools/common.sh)
@@ -86,8 +90,13 @@ loopf() { awk -v k="$2" '/^Loop time of/ {v = $k} END {print v}' "$1"; }
 neighs() { awk '/^Ave neighs\/atom/ {v = $4} END {print v}' "$1"; }
 cpuuse() { awk '/% CPU use with/ {v = $1} END {print v}' "$1"; }
 builds() { awk '/^Neighbor list builds/ {v = $5} END {print v}' "$1"; }
+# seconds the rank ran during the loop: loop time x "% CPU use" / 100
+cpuloop() { awk '/^Loop time of/ {t = $4} /% CPU use with/ {c = $1 + 0} END {printf "%.6g", t * c / 100}' "$1"; }
+# bytes per atom: "Per MPI rank memory allocation (min/avg/max) = a | b | c Mbytes" (avg) x ranks / atoms
+mempp() { awk -v np="$NP" '/^Per MPI rank memory allocation/ {m = $(NF - 3)} /^Loop time of/ {n = $12}
+  END {printf "%.0f", m * 1048576 * np / n}' "$1"; }
 
-declare -A best log
+declare -A best log bestcpu
 run_case() {   # name, then LAMMPS arguments
   local name=$1; shift
   local r t
@@ -98,6 +107,10 @@ run_case() {   # name, then LAMMPS arguments
       exit 1
     fi
     t=$(loopf "$name.$r.log" 4)
+    local c; c=$(cpuloop "$name.$r.log")
+    if [ -z "${bestcpu[$name]:-}" ] || awk -v a="$c" -v b="${bestcpu[$name]}" 'BEGIN {exit !(a < b)}'; then
+      bestcpu[$name]=$c
+    fi
     if [ -z "${best[$name]:-}" ] || awk -v a="$t" -v b="${best[$name]}" 'BEGIN {exit !(a < b)}'; then
       best[$name]=$t; log[$name]=$name.$r.log
     fi
@@ -120,10 +133,13 @@ echo "cellmech benchmark: $ver, $NP MPI rank(s), best of $REPEAT run(s) per case
 echo "machine: $(uname -n), nproc $(nproc), CPU: ${cpu:-unknown}"
 load1=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo "?")
 echo "load average (1 min) before / after: $load0 / $load1 (other work on the machine slows every case)"
+echo "uptime: $(uptime)"
 echo "cell: ${gen%%$'\n'*}"
 echo "fluid-only cases: the $nfluid fluid particles of that cell (spacing $spacing um, mass $mfluid pg), no wall"
 echo
-printf '%-30s %7s %6s %10s %17s %9s %12s %7s %6s\n' case atoms steps "loop (s)" "particle-steps/s" "vs stock" "neighs/atom" builds "CPU"
+refc=$(awk -v n="$(loopf "${log[stock-sph]}" 12)" -v s="$(loopf "${log[stock-sph]}" 9)" \
+  -v t="${bestcpu[stock-sph]}" 'BEGIN {printf "%.6e", n * s / t}')
+printf '%-30s %7s %6s %10s %17s %9s %12s %9s %12s %7s %6s %8s\n' case atoms steps "loop (s)" "particle-steps/s" "vs stock" "per CPU-s" "vs stock" "neighs/atom" builds "CPU" "B/atom"
 for name in stock-sph cell-sph cell-full; do
   f=${log[$name]}
   case $name in
@@ -133,15 +149,17 @@ for name in stock-sph cell-sph cell-full; do
   esac
   nb=$(neighs "$f"); [ "$name" = cell-full ] && nb="-"   # hybrid/overlay: LAMMPS prints 0
   awk -v l="$label" -v n="$(loopf "$f" 12)" -v s="$(loopf "$f" 9)" -v t="${best[$name]}" \
-    -v ref="$ref" -v nb="$nb" -v b="$(builds "$f")" -v cpu="$(cpuuse "$f")" 'BEGIN {
-      r = n * s / t
-      printf "%-30s %7d %6d %10.3f %17.4e %9.3f %12s %7s %6s\n", l, n, s, t, r, r / ref, nb, b, cpu }'
+    -v ref="$ref" -v nb="$nb" -v b="$(builds "$f")" -v cpu="$(cpuuse "$f")" \
+    -v tc="${bestcpu[$name]}" -v refc="$refc" -v mem="$(mempp "$f")" 'BEGIN {
+      r = n * s / t; rc = n * s / tc
+      printf "%-30s %7d %6d %10.3f %17.4e %9.3f %12.4e %9.3f %12s %7s %6s %8s\n", l, n, s, t, r, r / ref, rc, rc / refc, nb, b, cpu, mem }'
 done
 awk -v n="$nfluid" -v s="$(loopf "${log[cell-full]}" 9)" -v t="${best[cell-full]}" -v ref="$ref" 'BEGIN {
   r = n * s / t
   printf "(a) counting its %d fluid particles only: %.4e fluid-particle-steps/s, %.3f x stock SPH\n", n, r, r / ref }'
 echo
 echo "CPU: LAMMPS's \"% CPU use\" of the kept run; well under 100% means the rank waited for the CPU."
+echo "per CPU-s: particle-steps per second the rank ran (best run of each case); B/atom: memory per particle."
 echo "LAMMPS timing breakdown of the kept runs (% of loop time):"
 for name in stock-sph cell-sph cell-full; do
   awk -v l="$name" '/^Section \|/ {on = 1; next} on && /^-+$/ {next}
