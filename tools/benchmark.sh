@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Benchmark (not a test): particle-steps per second of
 #   (a) cell/full    the full cell at the paper's resolution (2562 wall nodes + 3527 fluid),
-#                    lammps-inputs/in.inflate with its cell-model.lmp, 2000 steps;
+#                    lammps-inputs/in.inflate with its cell-model.lmp, 2000 steps, once for each
+#                    wall of WALLS (same cell, same run: the cost of each wall side by side);
 #   (b) stock-sph    the same 3527 fluid particles alone with stock LAMMPS SPH
 #                    (pair sph/taitwater/morris + fix sph), tools/bench/in.stock-sph;
 #   (c) cell/sph     the same particles with our pair cell/sph + fix cell/fluid Pi 0 Lp 0,
@@ -23,8 +24,9 @@
 #   -r REPEAT  runs per case (default 3)
 #   -n NSTEPS  steps per run (default 2000)
 #   -k         keep the work folder (data files and LAMMPS logs) and print its path
-# Environment: LMP (else build/cellmech-env.sh is sourced), NP, REPEAT, NSTEPS, PYTHON, WALL (the
-#   wall of the full cell: tether, membrane or bending; lammps-inputs/cell-wall.lmp).
+# Environment: LMP (else build/cellmech-env.sh is sourced), NP, REPEAT, NSTEPS, PYTHON, WALLS (the
+#   walls of the full cell, lammps-inputs/cell-wall.lmp; default "tether membrane bending", or
+#   WALL alone when WALL is set).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 NP=${NP:-1}
@@ -48,6 +50,7 @@ if [ -z "${LMP:-}" ]; then
   source "$here/build/cellmech-env.sh"
 fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+user_wall=${WALL:-}     # common.sh gives WALL its default
 source "$here/tools/common.sh"
 inputs=$here/lammps-inputs
 bench=$here/tools/bench
@@ -60,7 +63,10 @@ cd "$work"
 
 # ---- the cell and its fluid ----------------------------------------------------------------------
 read -r NF4 R04 < <(level_params 4 nfluid r0)
-gen=$("$PYTHON" "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid "$NF4" --inset "$R04" "${wall_gen[@]}")
+gen=$("$PYTHON" "$here/tools/cellgen.py" cell -o cell.data --level 4 --nfluid "$NF4" --inset "$R04")
+# the same cell with the hinges of the bending wall (cellgen is deterministic: the same particles)
+"$PYTHON" "$here/tools/cellgen.py" cell -o cell-bending.data --level 4 --nfluid "$NF4" --inset "$R04" \
+  --bending > /dev/null
 spacing=$(sed -n 's/.*spacing \([0-9.eE+-]*\),.*/\1/p' <<<"$gen" | head -n1)
 # the fluid (type 2) of cell.data, in its box, as data files for atom_style sph and molecular
 awk '
@@ -119,8 +125,15 @@ run_case() {   # name, then LAMMPS arguments
 
 run_case stock-sph -in "$bench/in.stock-sph" -var data fluid-sph.data -var nsteps "$NSTEPS"
 run_case cell-sph -in "$bench/in.cell-sph" -var data fluid-cell.data -var m "$mfluid" -var nsteps "$NSTEPS"
-run_case cell-full -in "$inputs/in.inflate" -var dir "$inputs" "${wall_vars[@]}" -var data cell.data \
-  -var nsteps "$NSTEPS" -var every 1000 -var out inflate.dat -var restart_out inflated.restart
+WALLS=${WALLS:-${user_wall:-tether membrane bending}}
+full=()
+for w in $WALLS; do
+  case $w in tether|membrane|bending) ;; *) echo "benchmark: WALLS: unknown wall '$w' (tether, membrane or bending)" >&2; exit 2 ;; esac
+  d=cell.data; [ "$w" = bending ] && d=cell-bending.data
+  run_case "cell-full-$w" -in "$inputs/in.inflate" -var dir "$inputs" -var wall "$w" -var data "$d" \
+    -var nsteps "$NSTEPS" -var every 1000 -var out "inflate-$w.dat" -var restart_out "inflated-$w.restart"
+  full+=("cell-full-$w")
+done
 
 # ---- report ------------------------------------------------------------------------------------
 cpu=$(awk -F': *' '/^model name/ {print $2; exit}' /proc/cpuinfo 2>/dev/null || true)
@@ -140,28 +153,32 @@ echo
 refc=$(awk -v n="$(loopf "${log[stock-sph]}" 12)" -v s="$(loopf "${log[stock-sph]}" 9)" \
   -v t="${bestcpu[stock-sph]}" 'BEGIN {printf "%.6e", n * s / t}')
 printf '%-30s %7s %6s %10s %17s %9s %12s %9s %12s %7s %6s %8s\n' case atoms steps "loop (s)" "particle-steps/s" "vs stock" "per CPU-s" "vs stock" "neighs/atom" builds "CPU" "B/atom"
-for name in stock-sph cell-sph cell-full; do
+for name in stock-sph cell-sph "${full[@]}"; do
   f=${log[$name]}
   case $name in
     stock-sph) label="(b) stock sph/taitwater/morris" ;;
     cell-sph) label="(c) cell/sph + cell/fluid" ;;
-    cell-full) label="(a) full cell (in.inflate)" ;;
+    cell-full-*) label="(a) full cell, ${name#cell-full-} wall" ;;
   esac
-  nb=$(neighs "$f"); [ "$name" = cell-full ] && nb="-"   # hybrid/overlay: LAMMPS prints 0
+  nb=$(neighs "$f"); [ "${name#cell-full}" != "$name" ] && nb="-"   # hybrid/overlay: LAMMPS prints 0
   awk -v l="$label" -v n="$(loopf "$f" 12)" -v s="$(loopf "$f" 9)" -v t="${best[$name]}" \
     -v ref="$ref" -v nb="$nb" -v b="$(builds "$f")" -v cpu="$(cpuuse "$f")" \
     -v tc="${bestcpu[$name]}" -v refc="$refc" -v mem="$(mempp "$f")" 'BEGIN {
       r = n * s / t; rc = n * s / tc
       printf "%-30s %7d %6d %10.3f %17.4e %9.3f %12.4e %9.3f %12s %7s %6s %8s\n", l, n, s, t, r, r / ref, rc, rc / refc, nb, b, cpu, mem }'
 done
-awk -v n="$nfluid" -v s="$(loopf "${log[cell-full]}" 9)" -v t="${best[cell-full]}" -v ref="$ref" 'BEGIN {
-  r = n * s / t
-  printf "(a) counting its %d fluid particles only: %.4e fluid-particle-steps/s, %.3f x stock SPH\n", n, r, r / ref }'
+for name in "${full[@]}"; do
+  awk -v l="${name#cell-full-}" -v n="$nfluid" -v s="$(loopf "${log[$name]}" 9)" -v t="${best[$name]}" \
+    -v ref="$ref" -v t0="${best[${full[0]}]}" -v l0="${full[0]#cell-full-}" \
+    -v c="${bestcpu[$name]}" -v c0="${bestcpu[${full[0]}]}" 'BEGIN {
+    r = n * s / t
+    printf "(a) %s wall, counting its %d fluid particles only: %.4e fluid-particle-steps/s, %.3f x stock SPH; time per step %.3f x the %s wall (CPU time per step %.3f x)\n", l, n, r, r / ref, t / t0, l0, c / c0 }'
+done
 echo
 echo "CPU: LAMMPS's \"% CPU use\" of the kept run; well under 100% means the rank waited for the CPU."
 echo "per CPU-s: particle-steps per second the rank ran (best run of each case); B/atom: memory per particle."
 echo "LAMMPS timing breakdown of the kept runs (% of loop time):"
-for name in stock-sph cell-sph cell-full; do
+for name in stock-sph cell-sph "${full[@]}"; do
   awk -v l="$name" '/^Section \|/ {on = 1; next} on && /^-+$/ {next}
     on && NF >= 2 && $2 == "|" {out = out sprintf(" %s %s", $1, $NF)} on && /^Other/ {on = 0}
     END {printf "  %-10s%s\n", l, out}' "${log[$name]}"
