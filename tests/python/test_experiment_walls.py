@@ -180,22 +180,61 @@ def test_experiments_sh_membrane_paper_keeps_the_tether_report(tmp_path):
     assert os.path.exists(root / "docs" / "experiments" / "membrane-relax-stiff.png")
 
 
+def _oscillator(t, zeta, period, amp):
+    """A damped oscillator released from rest at -amp."""
+    wd = 2 * math.pi / period
+    w = wd / math.sqrt(1 - zeta ** 2)
+    return -amp * np.exp(-zeta * w * t) * (np.cos(wd * t) + zeta / math.sqrt(1 - zeta ** 2) * np.sin(wd * t))
+
+
 def test_soft_damping_note_reads_the_diagnostic_releases(tmp_path):
-    t = np.arange(0.0, 100.0, 0.1)
+    t = np.arange(0.0, 200.0, 0.1)
     z = np.zeros_like(t)
     free = 0.1
-    curves = {"1": free + 0.2 * np.exp(-t / 20.0),                                 # overdamped
-              "mu0.01": free + 0.2 * np.exp(-t / 25.0),                            # overdamped
-              "gc0": free + 0.2 * np.exp(-t / 60.0) * np.cos(2 * math.pi * t / 30.0)}  # oscillating
-    for k, f in curves.items():
-        np.savetxt(tmp_path / f"relax-soft-{k}.dat", np.c_[np.arange(len(t)), t, f, z, z, z, z, z])
+    # damping ratio of the shape: 0.3 at 1 mPa s, about the same with 100x less viscosity, 0.1 without
+    # the contact damping
+    for k, zeta in (("1", 0.3), ("mu0.01", 0.28), ("gc0", 0.1)):
+        d = _oscillator(t, zeta, 90.0, 8.0)
+        np.savetxt(tmp_path / f"relax-soft-{k}.dat",
+                   np.c_[np.arange(len(t)), t, free - 0.025 * d, z, z, 60 + 0.5 * d, 60 - 0.5 * d, z])
+        (tmp_path / f"log.relax-soft-{k}").write_text("Total wall time: 0:01:00\n")
+    (tmp_path / "times.txt").write_text("relax-soft-1 60 ok\n")
     np.savetxt(tmp_path / "soft-compressed.restart.load.dat", np.c_[np.zeros((6, 5)), np.full(6, free), np.zeros(6)])
     L = walls.soft_damping_note(str(tmp_path))
     print("\n".join(L))
-    rows = [ln for ln in L if ln.startswith("| ") and "regime" not in ln]
-    assert [r.rstrip(" |").split("| ")[-1] for r in rows] == ["overdamped", "overdamped", "oscillating"]
+    rows = [ln for ln in L if ln.startswith("| ") and "regime |" not in ln]
+    zetas = [float(r.rstrip(" |").split(", ")[-3]) for r in rows]
+    assert [abs(x - y) < 0.02 for x, y in zip(zetas, (0.3, 0.28, 0.1))] == [True] * 3
     text = " ".join(L)
-    assert "not the fluid's viscosity" in text and "that damping (gc of cell-model.lmp) overdamps it" in text
-    os.remove(tmp_path / "relax-soft-gc0.dat")
+    assert "the fluid's viscosity takes little of what the first swing loses" in text
+    assert "the fluid-wall contact damping (gc) takes most of what the first swing loses" in text
+    # a release still running (no end in its log) is left out
+    (tmp_path / "log.relax-soft-gc0").write_text("Step\n")
+    assert "gc" not in " ".join(walls.soft_damping_note(str(tmp_path)))
     os.remove(tmp_path / "relax-soft-mu0.01.dat")
     assert walls.soft_damping_note(str(tmp_path)) == []
+
+
+def test_shape_relaxation_damping_ratio():
+    """H - W of a damped oscillator released from rest: regime, period and damping ratio back from
+    the record (the overshoot exp(-zeta pi / sqrt(1 - zeta^2)))."""
+    for zeta, period in ((0.3, 90.0), (0.1, 1.5)):
+        wd = 2 * math.pi / period
+        w = wd / math.sqrt(1 - zeta ** 2)
+        t = np.linspace(0.0, 2.2 * period, 4001)
+        d = -8.0 * np.exp(-zeta * w * t) * (np.cos(wd * t) + zeta / math.sqrt(1 - zeta ** 2) * np.sin(wd * t))
+        z = np.zeros_like(t)
+        a = np.c_[np.arange(len(t)), t, z, z, z, 60.0 + 0.5 * d, 60.0 - 0.5 * d, z]
+        r = walls.shape_relaxation(a)
+        print(zeta, period, "->", r["regime"], r["period"], r["overshoot"], r["zeta"])
+        assert r["regime"] == "oscillating"
+        assert abs(r["zeta"] - zeta) < 0.02 and abs(r["period"] / period - 1) < 0.05
+        # the next swing: the overshoot factor again; the record (2.2 periods) holds it whole
+        x = math.exp(-zeta * math.pi / math.sqrt(1 - zeta ** 2))
+        assert abs(r["swing2"] - x) < 0.03 and not r["swing2_open"]
+    # overdamped: no overshoot
+    t = np.linspace(0.0, 100.0, 2001)
+    d = -8.0 * np.exp(-t / 20.0)
+    z = np.zeros_like(t)
+    r = walls.shape_relaxation(np.c_[np.arange(len(t)), t, z, z, z, 60.0 + d, 60.0 + z, z])
+    assert r["regime"] == "overdamped" and r["overshoot"] == 0.0 and math.isnan(r["zeta"])
