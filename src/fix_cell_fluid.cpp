@@ -19,7 +19,9 @@
    The osmotic uptake of a step is Eq. 10 linearised in its own effect on
    the pressure (osmotic_mass_step in cell_physics.h), stable for the large
    Lp that inflate a cell. Under run_style respa they advance on the
-   outermost level, with the SPH forces.
+   outermost level, with the SPH forces, by its step; with only the wall's
+   elements on the inner levels (they act on wall nodes), the fluid's
+   velocity there is still the half step of the outer level.
 
    Options for tissues (not in the paper, which has one cell in pure water;
    docs/fix_cell_fluid.rst): Pi and Lp per cell; solutes kept in their cell,
@@ -304,11 +306,16 @@ void FixCellFluid::init()
     auto respa = dynamic_cast<Respa *>(update->integrate);
     ilevel_respa = respa->nlevels - 1;
     dt = respa->step[ilevel_respa];
-    // density must advance where the SPH forces and the continuity rate are computed
-    if (respa->level_pair != ilevel_respa)
+    // density must advance with the SPH forces, where the pairs of the continuity pass are reused;
+    // with respa's 'hybrid' keyword pair cell/sph checks its own level in the run's setup
+    const int level = respa->level_pair;
+    if (respa->nhybrid_styles == 0 && level != ilevel_respa)
       error->all(FLERR,
-                 "Fix cell/fluid with run_style respa requires the pair styles on the outermost "
-                 "level (e.g. run_style respa 2 2 bond 1 angle 1 pair 2)");
+                 "Fix cell/fluid {} with run_style respa needs the pair styles (cell/sph) on the "
+                 "outermost level: expected 'run_style respa {} ... pair {}', got {}",
+                 id, respa->nlevels, ilevel_respa + 1,
+                 level < 0 ? std::string("pair inner/middle/outer")
+                           : fmt::format("pair {}", level + 1));
   }
   index_cells();
 }
@@ -642,9 +649,19 @@ void FixCellFluid::pre_force(int /*vflag*/)
   }
 }
 
+void FixCellFluid::setup_pre_force_respa(int vflag, int ilevel)
+{
+  if (ilevel == ilevel_respa) setup_pre_force(vflag);
+}
+
 void FixCellFluid::pre_force_respa(int vflag, int ilevel, int /*iloop*/)
 {
-  if (ilevel == ilevel_respa) pre_force(vflag);
+  if (ilevel != ilevel_respa) return;
+  // the inner levels' last half kick changed the owned velocities after the last forward
+  // communication: the ghosts take them again, so that the continuity rate (and the outer pair
+  // forces) see the same velocities on both sides of a rank boundary, as under Verlet
+  if (ilevel > 0) comm->forward_comm();
+  pre_force(vflag);
 }
 
 /* ----------------------------------------------------------------------

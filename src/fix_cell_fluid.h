@@ -29,6 +29,7 @@ class FixCellFluid : public Fix {
   int setmask() override;
   void init() override;
   void setup_pre_force(int) override;
+  void setup_pre_force_respa(int, int) override;
   void pre_force(int) override;
   void pre_force_respa(int, int, int) override;
   int modify_param(int, char **) override;

@@ -33,6 +33,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "respa.h"
 #include "update.h"
 
 #include <cmath>
@@ -175,6 +176,7 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
 void PairCellSPH::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (update->setupflag) check_respa_level();
 
   // fix cell/fluid advanced density and mass in pre_force: refresh the ghosts
   comm->forward_comm(this);
@@ -265,6 +267,26 @@ void PairCellSPH::compute(int eflag, int vflag)
   }
 
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   fix cell/fluid advances the density on respa's outermost level, with the continuity pass whose
+   pairs these forces reuse. With respa's 'hybrid' keyword only Respa knows which sub-style is
+   on which level; the level that computes now is the outermost iff it tallies global energies.
+------------------------------------------------------------------------- */
+
+void PairCellSPH::check_respa_level()
+{
+  // a minimisation's setup calls the pair directly, outside respa's levels
+  if (update->whichflag != 1 || !utils::strmatch(update->integrate_style, "^respa")) return;
+  auto respa = dynamic_cast<Respa *>(update->integrate);
+  if (!respa || respa->nhybrid_styles == 0 || respa->tally_global) return;
+  if (!modify->get_fix_by_style("^cell/fluid").empty())
+    error->all(FLERR,
+               "Pair style cell/sph with fix cell/fluid under run_style respa must be on the "
+               "outermost level, where the fix advances the density: expected level {} for "
+               "cell/sph in the respa 'hybrid' keyword, got an inner level",
+               respa->nlevels);
 }
 
 /* ----------------------------------------------------------------------

@@ -50,6 +50,7 @@ class PairCellSPH : public Pair {
 
  protected:
   void check_fluid_atoms();
+  void check_respa_level();
   int *fluid;                    // per type: 1 if a fluid type (pair_coeff I I set)
   double *rho0, *c, *P0, *mu;    // per type
   double **s;                    // per type pair: smoothing length (cutoff 2s)

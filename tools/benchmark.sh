@@ -7,7 +7,10 @@
 #   (b) stock-sph    the same 3527 fluid particles alone with stock LAMMPS SPH
 #                    (pair sph/taitwater/morris + fix sph), tools/bench/in.stock-sph;
 #   (c) cell/sph     the same particles with our pair cell/sph + fix cell/fluid Pi 0 Lp 0,
-#                    tools/bench/in.cell-sph.
+#                    tools/bench/in.cell-sph;
+#   (d) respa        time to solution of the paper-resolution compression to 20% strain,
+#                    single-level against run_style respa (tools/bench/respa.sh, a few minutes;
+#                    RESPA=0 skips it, RESPA_REPEAT runs per scheme, default 1).
 # (b) and (c) read exactly the fluid of the generated cell.data (lattice spacing 3.01 um, clipped
 # inside the wall) in its fixed box, with rho0 1, c 264.6, viscosity 1 mPa s, cutoff 2s = 6.4 um
 # (stock takes it as its h), dt 0.001 us, units micro, no wall, no turgor, no osmosis; the script
@@ -189,4 +192,8 @@ if [ "$nb" = "$nc" ]; then
 else
   echo "neighbour check: MISMATCH: stock-sph Ave neighs/atom = $nb, cell-sph = $nc" >&2
   exit 1
+fi
+if [ "${RESPA:-1}" != 0 ]; then
+  echo
+  NP=$NP PYTHON=$PYTHON bash "$bench/respa.sh" "$work/respa" "${RESPA_REPEAT:-1}"
 fi
