@@ -318,18 +318,22 @@ def case_sheet(run, level, ctx):
 
 # ---- case 5 ------------------------------------------------------------------------------------
 
-def membrane_reference(P, strains, rho, material="neohookean"):
+def membrane_reference(P, strains, rho, material="neohookean", volumes=False):
     """(forces in nN of the membrane model, cellmech.membrane, at the strains, or None; a message
-    when there is none). The contents' bulk modulus is the Tait fluid's,
-    rho dP/drho = rho0 c^2 (rho/rho0)^7."""
+    when there is none; with volumes=True also the relative change of its enclosed volume at the
+    strains). The contents' bulk modulus is the Tait fluid's, rho dP/drho = rho0 c^2 (rho/rho0)^7."""
     from .. import membrane
     K = RHO0 * C_PHYS ** 2 * (rho / RHO0) ** 7
     try:
-        curve = membrane.compress_curve(STIFF["G"] * STIFF["t0"], R0, P, list(strains), bulk_modulus=K,
-                                        material=material)
+        curve = membrane.compress_curve(STIFF["G"] * STIFF["t0"], R0, P, [0.0] + list(strains),
+                                        bulk_modulus=K, material=material)
     except Exception as exc:
-        return None, f"the membrane solver failed at P = {P:g} kPa: {type(exc).__name__}: {exc}"
-    return [c["F"] if c is not None else None for c in curve], None
+        why = f"the membrane solver failed at P = {P:g} kPa: {type(exc).__name__}: {exc}"
+        return (None, why, None) if volumes else (None, why)
+    forces = [c["F"] if c is not None else None for c in curve[1:]]
+    if not volumes:
+        return forces, None
+    return forces, None, [c["V"] / curve[0]["V"] - 1 for c in curve[1:]]
 
 
 def case_compression(run, level, ctx):
@@ -342,6 +346,7 @@ def case_compression(run, level, ctx):
     # at level 4 (the rate dependence at 0.5 m/s is 1.5%, docs/experiments.md); the tethers have
     # 1.5x its shear modulus (docs/membrane.rst) and are compared, not judged
     tol = None if run.wall == "tether" else 0.05
+    volumes = {}
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6, 4.2))
     missing = False
@@ -352,7 +357,7 @@ def case_compression(run, level, ctx):
         Fw = analysis.windowed(eps, F, COMPRESS_STRAINS, half)
         rho = ref.tait_density(st["P"], RHO0, C_PHYS)
         fine = np.arange(0.01, 0.2001, 0.01)
-        mem, why = membrane_reference(st["P"], fine, rho)
+        mem, why, mem_dv = membrane_reference(st["P"], fine, rho, volumes=True)
         if mem is None:
             missing = True
             e.note(f"P = {P:g} kPa: reference missing ({why}).")
@@ -367,9 +372,12 @@ def case_compression(run, level, ctx):
         a = np.loadtxt(run.path(f"compress-L{level}-P{P:g}.dat"), ndmin=2)
         if a.shape[1] >= 11:       # the volumes (in.compress columns 10, 11; older runs lack them)
             k = int(np.argmin(abs(a[:, 2] - COMPRESS_STRAINS[-1])))
-            for j, what in ((9, "volume the wall encloses"), (10, "fluid volume sum m/rho")):
-                e.add(f"P={P:g}: {what}, change at eps {a[k, 2]:.2f}", a[k, j] / a[0, j] - 1, None,
+            dv = [a[k, j] / a[0, j] - 1 for j in (9, 10)]
+            for x, what in zip(dv, ("volume the wall encloses", "fluid volume sum m/rho")):
+                e.add(f"P={P:g}: {what}, change at eps {a[k, 2]:.2f}", x, None,
                       group=f"P{P:g}-volume")
+            if mem is not None:
+                volumes[P] = (a[k, 2], dv[0], dv[1], mem_dv[int(round(a[k, 2] / 0.01)) - 1])
         ax.plot(eps, F * 1e-3, f"C{i}-", lw=1, label=f"P = {P:g} kPa (sim)")
         ax.plot(COMPRESS_STRAINS, Fw * 1e-3, f"C{i}o", ms=4)
         if mem is not None:
@@ -383,6 +391,17 @@ def case_compression(run, level, ctx):
     _save(fig, ctx, "compression.png", e)
     if missing:
         e.d["status"] = "reference missing"
+    if volumes:
+        e.note("Volumes: " + "; ".join(
+            f"P = {P:g} kPa, eps {x:.2f}: the wall encloses {w:+.2%}, the fluid's own volume (sum "
+            f"m/rho) {f:+.2%}, the membrane model {m:+.2%}" for P, (x, w, f, m) in volumes.items()) +
+            ". The membrane model's contents fill its wall exactly, so its volume changes only by "
+            "the liquid's compression. The particle cell keeps a layer of the contact distance r0 "
+            "between the wall and the outermost fluid particles, and the slack centre of each "
+            "contact disc (where tension-field theory lays the wall flat on the plate) dimples "
+            "inward between the discrete nodes: the wall loses more volume than its fluid. Both "
+            "are of the size of r0 and the node spacing and shrink with the level; they matter "
+            "where the plate force comes from the volume the wall must hold, at low turgor.")
     e.note(f"Plate speed 0.5 m/s (quasistatic). Forces are the mean of both plates, averaged over "
            f"|eps - eps_i| < {half:g}: the wall meets a plate ring of nodes by ring, which steps "
            f"the raw curve. The membrane model gets the simulation's turgor and the fluid's bulk "
