@@ -26,6 +26,7 @@
 #include "cell_fields.h"
 
 #include "atom.h"
+#include "cell_mpi.h"
 #include "cell_physics.h"
 #include "comm.h"
 #include "error.h"
@@ -186,30 +187,16 @@ void BondCellLamella::process_debonds()
   if (comm->nprocs > 1) MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
   if (nall == 0) return;
 
-  const int nprocs = comm->nprocs;
-  std::vector<int> nper(nprocs), counts(nprocs), displs(nprocs);
-  MPI_Allgather(&nmine, 1, MPI_INT, nper.data(), 1, MPI_INT, world);
-
-  // tags and cells as tagints, areas as doubles: two gathers keep bigbig tags exact
-  std::vector<tagint> tmine, tall(4 * (size_t) nall);
-  std::vector<double> amine, aall(nall);
+  // tags and cells as tagints, areas as doubles: two gathers keep bigbig tags exact (only in
+  // the rare steps with debonds)
+  std::vector<tagint> tmine;
+  std::vector<double> amine;
   for (const auto &e : debonded) {
     tmine.insert(tmine.end(), {e.tag1, e.tag2, e.mol1, e.mol2});
     amine.push_back(e.area);
   }
-  for (int p = 0, off = 0; p < nprocs; p++) {
-    counts[p] = 4 * nper[p];
-    displs[p] = off;
-    off += counts[p];
-  }
-  MPI_Allgatherv(tmine.data(), 4 * nmine, MPI_LMP_TAGINT, tall.data(), counts.data(), displs.data(),
-                 MPI_LMP_TAGINT, world);
-  for (int p = 0; p < nprocs; p++) {
-    counts[p] /= 4;
-    displs[p] /= 4;
-  }
-  MPI_Allgatherv(amine.data(), nmine, MPI_DOUBLE, aall.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
+  const std::vector<tagint> tall = CellMech::allgather_list(tmine, MPI_LMP_TAGINT, world);
+  const std::vector<double> aall = CellMech::allgather_list(amine, MPI_DOUBLE, world);
   debonded.clear();
 
   // with newton_bond off both owners of a bond saw it debond; sorted, the order (and so the

@@ -7,6 +7,7 @@
 #include "cell_index.h"
 
 #include "atom.h"
+#include "cell_mpi.h"
 #include "comm.h"
 #include "lammps.h"
 
@@ -28,18 +29,7 @@ void CellIndex::build(LAMMPS *lmp)
   std::sort(mine.begin(), mine.end());
   mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
 
-  const int nprocs = lmp->comm->nprocs;
-  int nmine = (int) mine.size();
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, lmp->world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  ids.resize(total);
-  MPI_Allgatherv(mine.data(), nmine, MPI_LMP_TAGINT, ids.data(), counts.data(), displs.data(),
-                 MPI_LMP_TAGINT, lmp->world);
+  ids = CellMech::allgather_list(mine, MPI_LMP_TAGINT, lmp->world);
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   dense = ids.empty() || ids.back() == (tagint) ids.size();

@@ -30,6 +30,7 @@
 #include "atom.h"
 #include "cell_fields.h"
 #include "bond.h"
+#include "cell_mpi.h"
 #include "cell_physics.h"
 #include "comm.h"
 #include "compute_cell_props.h"
@@ -237,17 +238,8 @@ void ComputeCellContacts::compute_array()
     mine.push_back(kv.first.second);
     mine.insert(mine.end(), kv.second.begin(), kv.second.end());
   }
-  const int nmine = mine.size();
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<double> gathered(total);
-  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, gathered.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
+  const std::vector<double> gathered = CellMech::allgather_list(mine, MPI_DOUBLE, world);
+  const int total = gathered.size();
   std::map<std::pair<int, int>, std::array<double, NCOL>> rows;
   auto global_row = [&](int m1, int m2) -> std::array<double, NCOL> & {
     auto key = std::make_pair(MIN(m1, m2), MAX(m1, m2));

@@ -35,6 +35,7 @@
 #include "atom.h"
 #include "bond.h"
 #include "bond_cell_tether.h"
+#include "cell_mpi.h"
 #include "cell_physics.h"
 #include "comm.h"
 #include "domain.h"
@@ -359,17 +360,8 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
       mine.insert(mine.end(), p, p + 3);
     }
   }
-  int nmine = mine.size();
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<double> tris(total);
-  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, tris.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
+  const std::vector<double> tris = CellMech::allgather_list(mine, MPI_DOUBLE, world);
+  const int total = tris.size();
 
   // group the triangles by cell
   const int ntri = total / 10;

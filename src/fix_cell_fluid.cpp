@@ -42,6 +42,7 @@
 
 #include "atom.h"
 #include "cell_checks.h"
+#include "cell_mpi.h"
 #include "cell_physics.h"
 #include "comm.h"
 #include "error.h"
@@ -485,17 +486,8 @@ void FixCellFluid::glued_pairs(std::vector<double> &pairs)
     mine.push_back(kv.first.second);
     mine.push_back(kv.second);
   }
-  const int nmine = mine.size();
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<double> gathered(total);
-  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, gathered.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
+  const std::vector<double> gathered = CellMech::allgather_list(mine, MPI_DOUBLE, world);
+  const int total = gathered.size();
   // summed in rank order into an ordered map: the same sums on every rank
   std::map<std::pair<int, int>, double> all;
   for (int k = 0; k < total; k += 3)
