@@ -27,6 +27,7 @@
 
 #include "atom.h"
 #include "cell_physics.h"
+#include "cell_restart.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_cell_tether_break.h"
@@ -350,26 +351,14 @@ double AngleCellMembrane::equilibrium_angle(int /*i*/)
 
 void AngleCellMembrane::write_restart(FILE *fp)
 {
-  fwrite(&G[1], sizeof(double), atom->nangletypes, fp);
-  fwrite(&t0[1], sizeof(double), atom->nangletypes, fp);
-  fwrite(&gamma[1], sizeof(double), atom->nangletypes, fp);
-  fwrite(&lamf[1], sizeof(double), atom->nangletypes, fp);
+  CellMech::write_type_arrays(fp, atom->nangletypes, {G, t0, gamma, lamf});
 }
 
 void AngleCellMembrane::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->nangletypes;
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &G[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &t0[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &lamf[1], sizeof(double), n, fp, nullptr, error);
-  }
-  MPI_Bcast(&G[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&t0[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&lamf[1], n, MPI_DOUBLE, 0, world);
+  CellMech::read_type_arrays(fp, n, {G, t0, gamma, lamf}, comm->me, world, error);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 

@@ -28,6 +28,7 @@
 #include "atom.h"
 #include "cell_mpi.h"
 #include "cell_physics.h"
+#include "cell_restart.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_cell_tether_break.h"
@@ -378,9 +379,7 @@ double BondCellLamella::equilibrium_distance(int /*i*/)
 void BondCellLamella::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
-  fwrite(&sigma[1], sizeof(double), atom->nbondtypes, fp);
-  fwrite(&Gc[1], sizeof(double), atom->nbondtypes, fp);
-  fwrite(&gamma[1], sizeof(double), atom->nbondtypes, fp);
+  CellMech::write_type_arrays(fp, atom->nbondtypes, {sigma, Gc, gamma});
 }
 
 void BondCellLamella::read_restart(FILE *fp)
@@ -388,14 +387,7 @@ void BondCellLamella::read_restart(FILE *fp)
   read_restart_settings(fp);
   allocate();
   const int n = atom->nbondtypes;
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &sigma[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &Gc[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
-  }
-  MPI_Bcast(&sigma[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&Gc[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
+  CellMech::read_type_arrays(fp, n, {sigma, Gc, gamma}, comm->me, world, error);
   for (int i = 1; i <= n; i++) {
     setflag[i] = 1;
     dc[i] = cohesive_length(sigma[i], Gc[i]);

@@ -17,6 +17,7 @@
 
 #include "atom.h"
 #include "cell_physics.h"
+#include "cell_restart.h"
 #include "comm.h"
 #include "cell_checks.h"
 #include "error.h"
@@ -311,26 +312,14 @@ double BondCellTether::equilibrium_distance(int /*i*/)
 
 void BondCellTether::write_restart(FILE *fp)
 {
-  fwrite(&G[1], sizeof(double), atom->nbondtypes, fp);
-  fwrite(&t0[1], sizeof(double), atom->nbondtypes, fp);
-  fwrite(&gamma[1], sizeof(double), atom->nbondtypes, fp);
-  fwrite(&lamf[1], sizeof(double), atom->nbondtypes, fp);
+  CellMech::write_type_arrays(fp, atom->nbondtypes, {G, t0, gamma, lamf});
 }
 
 void BondCellTether::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->nbondtypes;
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &G[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &t0[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &gamma[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &lamf[1], sizeof(double), n, fp, nullptr, error);
-  }
-  MPI_Bcast(&G[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&t0[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&gamma[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&lamf[1], n, MPI_DOUBLE, 0, world);
+  CellMech::read_type_arrays(fp, n, {G, t0, gamma, lamf}, comm->me, world, error);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 

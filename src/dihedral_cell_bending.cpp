@@ -24,6 +24,7 @@
 
 #include "atom.h"
 #include "cell_physics.h"
+#include "cell_restart.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -185,20 +186,14 @@ void DihedralCellBending::init_style()
 
 void DihedralCellBending::write_restart(FILE *fp)
 {
-  fwrite(&G[1], sizeof(double), atom->ndihedraltypes, fp);
-  fwrite(&t0[1], sizeof(double), atom->ndihedraltypes, fp);
+  CellMech::write_type_arrays(fp, atom->ndihedraltypes, {G, t0});
 }
 
 void DihedralCellBending::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->ndihedraltypes;
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &G[1], sizeof(double), n, fp, nullptr, error);
-    utils::sfread(FLERR, &t0[1], sizeof(double), n, fp, nullptr, error);
-  }
-  MPI_Bcast(&G[1], n, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&t0[1], n, MPI_DOUBLE, 0, world);
+  CellMech::read_type_arrays(fp, n, {G, t0}, comm->me, world, error);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
