@@ -7,6 +7,20 @@ import os
 MPI_FLAGS = ("--allow-run-as-root", "--oversubscribe")
 
 
+def stage_times(run):
+    """{stage: (seconds, status)} from the times.txt that the stage runners of tools/experiments.sh
+    and tools/tissue.sh write in a run folder (one line 'NAME SECONDS STATUS' per stage run; a
+    later line of the same stage wins); {} without one."""
+    t = {}
+    p = os.path.join(run, "times.txt")
+    if os.path.exists(p):
+        for line in open(p):
+            w = line.split()
+            if len(w) >= 3:
+                t[w[0]] = (int(w[1]), w[2])
+    return t
+
+
 def mpiexec():
     """The MPI launcher: $MPIEXEC (CTest passes the one CMake found), else mpirun."""
     return os.environ.get("MPIEXEC") or "mpirun"

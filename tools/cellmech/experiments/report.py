@@ -20,6 +20,7 @@ import shutil
 import numpy as np
 
 from .. import params
+from ..launch import stage_times
 from . import analyse as A
 from . import walls
 
@@ -45,19 +46,8 @@ class Runs:
         self.used_fallback = set()
         self.partial = set()
         self.base = {}
-        self.times = self._times(run)
-        self.fb_times = self._times(fallback) if fallback else {}
-
-    @staticmethod
-    def _times(d):
-        t = {}
-        p = os.path.join(d, "times.txt")
-        if os.path.exists(p):
-            for line in open(p):
-                w = line.split()
-                if len(w) >= 3:
-                    t[w[0]] = (int(w[1]), w[2])
-        return t
+        self.times = stage_times(run)
+        self.fb_times = stage_times(fallback) if fallback else {}
 
     def ok(self, stage):
         return self.times.get(stage, (0, ""))[1] == "ok"

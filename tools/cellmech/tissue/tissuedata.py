@@ -9,6 +9,8 @@ import os
 
 import numpy as np
 
+from ..launch import stage_times
+
 # fix ave/time files of the inputs (after the step column)
 COMPRESS = ["time_us", "strain", "stress_kPa", "F_top_nN", "F_bottom_nN", "P_mean_kPa", "P_min_kPa",
             "P_max_kPa", "fluid_mass_pg", "broken_tethers", "debonded_bonds", "debonded_area_um2",
@@ -81,15 +83,7 @@ def gen_stats(path):
         return json.load(f)
 
 
-def times(run):
-    t = {}
-    p = os.path.join(run, "times.txt")
-    if os.path.exists(p):
-        for line in open(p):
-            w = line.split()
-            if len(w) >= 3:
-                t[w[0]] = (int(w[1]), w[2])
-    return t
+times = stage_times
 
 
 def integral(y, x):
