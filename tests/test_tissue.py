@@ -14,7 +14,9 @@ inflated briefly:
    their events the same way in every output (fix cell_broken / cell_debonded totals, compute
    cell/props columns 13 and 16-17, compute cell/contacts columns 5-6, the VTK point fields broken and
    debonded, the debond log), and count zero of the other kind.
-4. Bad input: clear errors naming the command and the argument.
+4. Load balancing: an L of three cells on 2 ranks, LAMMPS's even split against balance / fix balance
+   (-var balance 1.1): the imbalance falls under 1.1 and the run stays the 1-rank run to round-off.
+5. Bad input: clear errors naming the command and the argument.
 """
 import glob
 import json
@@ -220,6 +222,41 @@ def consistent(d, common):
                     abs(area[2] - area[0]) < 1e-6 * area[0], f"{area[0]:.8g}")
 
 
+def balanced(d, common):
+    """Load balancing (tissue-model.lmp's -var balance): three cells in an L (a 2 x 1 x 2 block less
+    one corner) on 2 ranks split along x. LAMMPS's even split gives one rank two cells and the other
+    one; balance and fix balance (shift xyz) move the cut so that both hold the same within 10%,
+    and the run is the one rank's run but for the order of the sums."""
+    T.cellgen("tissue", "-o", "ell.data", "--lattice", "sc", "--n", 2, 1, 2, "--level", 3, "--nfluid", 440,
+              "--remove-box", 1, 1e9, -1, 1e9, 1, 1e9, cwd=d)
+    special = json.load(open(os.path.join(d, "ell.json")))["extra_special_per_atom"]
+    res = {}
+    for tag, n, bal in (("one", 1, 0), ("even", 2, 0), ("balanced", 2, 1.1)):
+        text = ("processors 2 1 1\n" if n == 2 else "") + f"include {T.INPUTS}/in.tissue-inflate\n" + \
+            DUMP.format(name=f"ell-{tag}.dump")
+        _, log = T.lmp(text, cwd=d, nprocs=n, log=f"log.ell-{tag}",
+                       variables=dict(common, Lp=10.0, special=special, data="ell.data", nsteps=300,
+                                      nsettle=100, every=100, balance=bal, restart_out="ell.restart",
+                                      out=f"ell-{tag}.dat", cells=f"ell-{tag}-cells.dat"))
+        nl = [tuple(map(float, m)) for m in
+              re.findall(r"^Nlocal:\s*([\d.eE+-]+) ave\s+([\d.eE+-]+) max\s+([\d.eE+-]+) min", log, re.M)]
+        res[tag] = (dump(f"{d}/ell-{tag}.dump"), nl[-1][1] / nl[-1][0], "Balancing ..." in log)
+    a, b, c = res["one"][0], res["even"][0], res["balanced"][0]
+    dx_even = np.abs(a[:, 1:4] - b[:, 1:4]).max()
+    dx_bal = np.abs(a[:, 1:4] - c[:, 1:4]).max()
+    print(f"L of 3 cells on 2 ranks: most particles on a rank / mean {res['even'][1]:.3f} with the even split, "
+          f"{res['balanced'][1]:.3f} balanced; positions after 400 steps against 1 rank: {dx_even:.1e} um "
+          f"(even split), {dx_bal:.1e} um (balanced)")
+    T.check("the even split loads one rank with two cells of three (imbalance > 1.25)", res["even"][1] > 1.25,
+            f"{res['even'][1]:.3f}")
+    T.check("-var balance 1.1 runs balance and brings the imbalance under 1.1",
+            res["balanced"][2] and res["balanced"][1] < 1.1 and not res["even"][2], f"{res['balanced'][1]:.3f}")
+    # only the order of the sums differs: round-off, grown over 400 steps (the restart check above
+    # allows 1e-10 um for the same decomposition; 1e-11 um is 1e-13 of the block)
+    T.check("balanced 2-rank run = 1-rank run (positions, 1e-11 um)", dx_bal < 1e-11 and dx_even < 1e-11,
+            f"{dx_bal:.1e}")
+
+
 def bad_inputs(d, common):
     cases = [
         (CONT + "compute c all cell/contacts 2.0\nrun 0\n", common,
@@ -260,6 +297,7 @@ def main():
     step0(d, common)
     restart(d, common)
     consistent(d, common)
+    balanced(d, common)
     bad_inputs(d, common)
     T.finish()
 

@@ -81,7 +81,7 @@ def solid_angle(p, a, b, c):
     return 2 * np.arctan2(num, den).sum(axis=1)
 
 
-def check_tissue(d, name, args, neighbours=None, porosity=None, box_volume=None):
+def check_tissue(d, name, args, neighbours=None, porosity=None, box_volume=None, kept=1.0):
     rc, out = gen(d, name, *args)
     T.check(f"{name}: generated", rc == 0, out if rc else "")
     if rc:
@@ -136,13 +136,17 @@ def check_tissue(d, name, args, neighbours=None, porosity=None, box_volume=None)
     # ---- volumes, porosity, box
     tb = np.array(st["tissue_box"])
     vbox = np.prod(tb[1::2] - tb[0::2])
-    phi = 1 - vols.sum() / vbox
-    T.check(f"{name}: sum of volumes + porosity x box = box volume", abs(phi - st["porosity"]) < 1e-9
+    vblock = st["block_volume"]
+    phi = 1 - vols.sum() / vblock
+    T.check(f"{name}: sum of volumes + porosity x block = block volume", abs(phi - st["porosity"]) < 1e-9
             and abs(vbox - st["box_volume"]) < 1e-6 * vbox, f"porosity {phi:.4f}")
+    # the cells' polyhedra tile the box, less the fraction of equal lattice cells --remove-box took
+    T.check(f"{name}: block volume = {kept:.6g} x box volume", abs(vblock / (kept * vbox) - 1) < 1e-9,
+            f"{vblock:.8g} vs {kept * vbox:.8g}")
     if porosity is not None:
         T.check(f"{name}: porosity as requested", abs(phi - porosity) < 1e-9, f"{phi:.6f}")
     if box_volume is not None:
-        T.check(f"{name}: block volume", abs(vbox / box_volume - 1) < 1e-12, f"{vbox:.6g}")
+        T.check(f"{name}: box volume", abs(vbox / box_volume - 1) < 1e-12, f"{vbox:.6g}")
     # ---- triangle quality and reach
     a, b, c = x[tri[:, 0]], x[tri[:, 1]], x[tri[:, 2]]
     ang = []
@@ -254,6 +258,11 @@ def main():
     with open(f"{d}/laguerre.txt", "w") as f:
         f.write("# x y z r\n0 0 0 30\n62 0 0 24\n\n28 52 0 28\n")
     check_tissue(d, "laguerre", ["--centres", "laguerre.txt", "--nfluid", 80], neighbours={1: 2, 2: 2, 3: 2})
+    # a notched sample: a 5 x 3 x 5 block less the corner above its first layer, 27 cells in an L;
+    # the cells by the notch keep their lattice shape, their faces towards it free (domed)
+    check_tissue(d, "notch", ["--lattice", "sc", "--n", 5, 3, 5, "--nfluid", 0,
+                              "--remove-box", 1, 1e9, -1, 1e9, 1, 1e9],
+                 neighbours={6: 4, 7: 4, 25: 2, 1: 3}, box_volume=75 * a_sc ** 3, kept=27 / 75)
     # bad inputs: a non-zero exit and a message that names the option or the line
     with open(f"{d}/bad.txt", "w") as f:
         f.write("0 0 0\n60 0 0\n1 2 x\n")
@@ -263,7 +272,10 @@ def main():
                        (["--lattice", "sc", "--gap", 0], "--gap: expected a finite number > 0"),
                        (["--centres", "bad.txt"], "bad.txt line 3"),
                        (["--centres", "close.txt"], "closer than twice the gap"),
-                       (["--lattice", "sc", "--bond-cutoff", 2], "--bond-cutoff must exceed --gap")):
+                       (["--lattice", "sc", "--bond-cutoff", 2], "--bond-cutoff must exceed --gap"),
+                       (["--lattice", "sc", "--remove-box", 500, 600, 0, 1, 0, 1],
+                        "--remove-box 500 600 0 1 0 1: expected a box holding some of the 8 seeds but "
+                        "not all, it holds 0")):
         rc, out = gen(d, "bad", *args)
         T.check(f"bad input {' '.join(map(str, args))}: refused with '{want}'", rc != 0 and want in out,
                 out.strip().splitlines()[-1] if out.strip() else "")

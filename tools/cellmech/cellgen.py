@@ -695,6 +695,21 @@ def build_tissue(args):
             tfail(f"seeds of cells {k + 1} and {jj[k, 1] + 1} are {dd[k, 1]:.4g} apart, closer than "
                   f"twice the gap ({2 * args.gap:g}): move them or lower --gap")
     cells = power_cells(seeds, radii, lo, hi)
+    if args.remove_box:
+        # A notch or a hole: the cells whose seeds lie inside are taken out after the diagram, so
+        # the cells around keep their shape and their faces towards the space become free surface
+        rb = np.array(args.remove_box, float)
+        gone = np.all((seeds >= rb[0::2]) & (seeds <= rb[1::2]), axis=1)
+        if gone.all() or not gone.any():
+            tfail(f"--remove-box {' '.join(f'{v:g}' for v in rb)}: expected a box holding some of the "
+                  f"{ncell} seeds but not all, it holds {int(gone.sum())}")
+        new_index = np.cumsum(~gone) - 1
+        for c in cells:
+            c["nbr"] = np.where(c["nbr"] >= 0, np.where(gone[np.maximum(c["nbr"], 0)], -1,
+                                                        new_index[np.maximum(c["nbr"], 0)]), -1)
+        cells = [c for c, g in zip(cells, gone) if not g]
+        seeds, radii, ncell = seeds[~gone], radii[~gone], int((~gone).sum())
+        how += f", {int(gone.sum())} removed by --remove-box"
     size = np.mean([c["volume"] for c in cells]) ** (1.0 / 3.0)
     if args.gap >= 0.5 * size:
         tfail(f"--gap must be smaller than half the cell size ({0.5 * size:.4g}), got {args.gap:g}")
@@ -752,7 +767,9 @@ def build_tissue(args):
         x = onto(x + 0.5 * step)
     vol = check_walls(x, centres, tri, edges)
     box_volume = float(np.prod(hi - lo))
-    porosity0 = 1.0 - vol.sum() / box_volume
+    # the cells' polyhedra tile the block: the box less what --remove-box took out
+    block_volume = float(sum(c["volume"] for c in cells))
+    porosity0 = 1.0 - vol.sum() / block_volume
     if args.air is not None:
         if not porosity0 <= args.air < 1:
             tfail(f"--air must be between the block's porosity without air ({porosity0:.4f}) and 1, "
@@ -760,7 +777,7 @@ def build_tissue(args):
         s = ((1.0 - args.air) / (1.0 - porosity0)) ** (1.0 / 3.0)
         x = centres[:, None, :] + s * (x - centres[:, None, :])
         vol = vol * s ** 3
-    porosity = 1.0 - vol.sum() / box_volume
+    porosity = 1.0 - vol.sum() / block_volume
     area_t, ang, elen, bary = wall_quality(x, tri)
     if ang.min() < args.min_angle:
         k = int(np.argmin(ang.min(axis=(1, 2))))
@@ -861,6 +878,7 @@ def build_tissue(args):
         sharpness=p, bond_cutoff=cutoff, glue=glue, fluid_spacing=spacing, inset=inset,
         fluid_mass=m_fluid, rho0=args.rho0, wall_areal_density=areal,
         tissue_box=[float(v) for v in np.ravel(np.column_stack([lo, hi]))], box_volume=box_volume,
+        block_volume=block_volume,
         porosity=float(porosity), porosity_without_air=float(porosity0),
         volume_mean=float(vol.mean()), volume_rel_spread=float(vol.std() / vol.mean()),
         faces_mean=float(np.mean([len(c["normals"]) for c in cells])),
@@ -942,6 +960,8 @@ def main(argv=None):
     t.add_argument("--seed", type=whole(0), default=1, help="random seed (default 1)")
     t.add_argument("--tissue-box", type=number(), nargs=6, metavar="X",
                    help="block that clips the cells: xlo xhi ylo yhi zlo zhi")
+    t.add_argument("--remove-box", type=number(), nargs=6, metavar="X",
+                   help="leave empty the cells whose seeds lie in xlo xhi ylo yhi zlo zhi (a notch)")
     t.add_argument("--elongate", type=number(above=0), nargs=3, metavar="F", help="stretch factors ax ay az")
     t.add_argument("--level", type=whole(0, 6), default=3, help="icosphere level of each wall (default 3)")
     t.add_argument("--gap", type=number(above=0), default=2.56, help="wall-wall gap (default 2.56 um)")
