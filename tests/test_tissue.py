@@ -271,6 +271,12 @@ read_data three.data fix cell NULL cell extra/special/per/atom ${special}
 include ${dir}/tissue-model.lmp
 run 0
 """, common, r"requires .* communicated to ghosts"),
+        # a balance threshold below 1 (or negative) is not a threshold
+        (CONT + "run 0\n", dict(common, balance=0.5),
+         r"ERROR: tissue-model.lmp: -var balance 0.5: expected 0 \(even split\) or a threshold >= 1"),
+        (CONT + "run 0\n", dict(common, balance=-1),
+         r"ERROR: tissue-model.lmp: -var balance -1: expected 0 \(even split\) or a threshold >= 1"),
+        (CONT + "run 0\n", dict(common, balance="yes"), r"ERROR: Variable balance: Non-numeric"),
     ]
     for k, (text, variables, pattern) in enumerate(cases):
         rc, log = T.lmp(text, cwd=d, variables=variables, check=False, log=f"log.bad{k}")
