@@ -6,7 +6,7 @@ docs/tissue-benchmark.md).
 The projection is a model on paper, not a measurement: every step a rank computes its cells and the
 ghost atoms around its subdomain, swaps the halo of those ghosts with its neighbours (the exchanges
 of the force field, HALO_DOUBLES per ghost atom) and joins the global reductions of one step
-(REDUCTIONS). The network enters as a latency alpha and a bandwidth beta, stated by the caller."""
+(`reductions`). The network enters as a latency alpha and a bandwidth beta, stated by the caller."""
 import math
 import re
 
