@@ -40,6 +40,21 @@ def cellgen(*args, cwd):
                    stdout=subprocess.DEVNULL)
 
 
+def coarse_cell(cwd, out="cell.data", *extra):
+    """The coarse test cell: level-3 wall (642 nodes), 440 fluid particles kept r0 of the coarse
+    model from the wall; extra cellgen options (e.g. --bending) follow."""
+    cellgen("cell", "-o", out, "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], *extra, cwd=cwd)
+
+
+def inflate_coarse(cwd, nsteps, every=1000):
+    """coarse_cell, then in.inflate (Table I, coarse lengths) for nsteps to inflated.restart;
+    its record in inflate.dat, its log in log.inflate."""
+    coarse_cell(cwd)
+    lmp(INPUTS + "/in.inflate", cwd=cwd, log="log.inflate", variables=dict(
+        COARSE, dir=INPUTS, data="cell.data", nsteps=nsteps, every=every, out="inflate.dat",
+        restart_out="inflated.restart"))
+
+
 def lmp(input_file, cwd, nprocs=1, variables=None, check=True, log="log.lammps"):
     """Run lmp on input_file (path, or text written to cwd/in.test); return (rc, log text)."""
     if "\n" in input_file:

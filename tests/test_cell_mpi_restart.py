@@ -25,7 +25,7 @@ def table(path):
 
 def main():
     d = T.workdir("cell-mpi-restart")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+    T.coarse_cell(d)
     common = dict(COARSE, dir=T.INPUTS, data="cell.data", nsteps=0, every=100, Lp=1.0, P0=50.0, mu=10.0)
     step0 = {}
     for n in (1, 2):
@@ -39,8 +39,7 @@ def main():
 
     # the paper's tethers, and the membrane wall with bending (-var wall bending, its hinges from
     # cellgen --bending): the continuing input gives the same -var wall
-    T.cellgen("cell", "-o", "cellb.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"],
-              "--bending", cwd=d)
+    T.coarse_cell(d, "cellb.data", "--bending")
     for wall, data in (("tether", "cell.data"), ("bending", "cellb.data")):
         var = dict(common, data=data, wall=wall)
         full = START.format(inputs=T.INPUTS) + "run 200\nwrite_restart half.restart\nrun 200\n" + \

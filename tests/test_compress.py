@@ -22,10 +22,7 @@ WINDOWS = (0.06, 0.10, 0.14, 0.18)
 
 def main():
     d = T.workdir("compress")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
-    T.lmp(T.INPUTS + "/in.inflate", cwd=d, log="log.inflate", variables=dict(
-        COARSE, dir=T.INPUTS, data="cell.data", nsteps=20000, every=5000, out="inflate.dat",
-        restart_out="inflated.restart"))
+    T.inflate_coarse(d, nsteps=20000, every=5000)
     curves = {}
     for v in (0.5, 0.25):
         out = f"compress-{v}.dat"

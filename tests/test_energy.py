@@ -27,7 +27,7 @@ run             20000
 
 def main():
     d = T.workdir("energy")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+    T.coarse_cell(d)
     T.lmp(f"include {T.INPUTS}/in.inflate\n" + EXTRA, cwd=d, variables=dict(
         COARSE, dir=T.INPUTS, data="cell.data", nsteps=0, Lp=0.0, Pi=0.0, P0=100.0, mu=0.0,
         gamma=0.0, gc=0.0))

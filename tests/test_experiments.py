@@ -41,8 +41,7 @@ def run(inp, d, log, **v):
 
 def main():
     d = T.workdir("experiments")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"],
-              "--pad", 40, cwd=d)
+    T.coarse_cell(d, "cell.data", "--pad", 40)
     run("in.inflate", d, "log.inflate", data="cell.data", nsteps=20000, every=5000, out="inflate.dat",
         restart_out="inflated.restart")
 

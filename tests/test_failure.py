@@ -26,7 +26,7 @@ def first_failure(rows):
 
 def main():
     d = T.workdir("failure")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+    T.coarse_cell(d)
     model = dict(COARSE, dir=T.INPUTS)
     T.lmp(f"{T.INPUTS}/in.inflate", cwd=d, variables=dict(model, data="cell.data", nsteps=25000,
                                                            every=500, restart_out="turgid.restart"),

@@ -57,7 +57,7 @@ def summary(a, Gw, t0, R0=30.0):
 
 def main():
     d = T.workdir("inflate")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+    T.coarse_cell(d)
 
     a = inflate(d, "stiff", -364.0, 20000)
     P, lam, Feq, R, Tw, lam_yl = summary(a, G, T0)

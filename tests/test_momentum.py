@@ -32,7 +32,7 @@ run             2000
 
 def main():
     d = T.workdir("momentum")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+    T.coarse_cell(d)
     for mu in (0.0, 10.0):
         T.lmp(f"include {T.INPUTS}/in.inflate\n" + EXTRA, cwd=d, log=f"log.mu{mu}", variables=dict(
             COARSE, dir=T.INPUTS, data="cell.data", nsteps=0, Lp=0.0, Pi=0.0, P0=100.0, mu=mu))

@@ -60,10 +60,7 @@ def with_run_style(line, after=None):
 
 def main():
     d = T.workdir("respa")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
-    T.lmp(T.INPUTS + "/in.inflate", cwd=d, log="log.inflate", variables=dict(
-        COARSE, dir=T.INPUTS, data="cell.data", nsteps=4000, every=1000, out="inflate.dat",
-        restart_out="inflated.restart"))
+    T.inflate_coarse(d, nsteps=4000, every=1000)
 
     _, _, verlet = compress(d, "verlet")
     _, log1, one = compress(d, "respa1", with_run_style("run_style respa 1"))

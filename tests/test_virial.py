@@ -31,7 +31,7 @@ run             50
 
 def main():
     d = T.workdir("virial")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], cwd=d)
+    T.coarse_cell(d)
     prints = "\n".join(
         f'print "{part}{k} $(c_r{part[0]}[{k}]:%.15g) $(-c_p{part[0]}[{k}]*v_V:%.15g)"'
         for part in ("pair", "bond") for k in range(1, 7))
