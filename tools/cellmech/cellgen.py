@@ -703,10 +703,9 @@ def build_tissue(args):
         if gone.all() or not gone.any():
             tfail(f"--remove-box {' '.join(f'{v:g}' for v in rb)}: expected a box holding some of the "
                   f"{ncell} seeds but not all, it holds {int(gone.sum())}")
-        new_index = np.cumsum(~gone) - 1
+        remap = np.where(gone, -1, np.cumsum(~gone) - 1)    # old index -> new, -1: taken out
         for c in cells:
-            c["nbr"] = np.where(c["nbr"] >= 0, np.where(gone[np.maximum(c["nbr"], 0)], -1,
-                                                        new_index[np.maximum(c["nbr"], 0)]), -1)
+            c["nbr"] = np.where(c["nbr"] >= 0, remap[c["nbr"]], -1)
         cells = [c for c, g in zip(cells, gone) if not g]
         seeds, radii, ncell = seeds[~gone], radii[~gone], int((~gone).sum())
         how += f", {int(gone.sum())} removed by --remove-box"
