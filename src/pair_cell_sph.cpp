@@ -47,7 +47,8 @@ using namespace CellPhysics;
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
     wnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1), pairs_build(-1),
-    pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr), maxfirst(0), maxpair(0)
+    pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr), maxfirst(0), maxpair(0), cand_build(-1), cand_list(nullptr), cand_nall(-1),
+    cand_first(nullptr), cand_j(nullptr), maxcand_first(0), maxcand(0)
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -61,6 +62,8 @@ PairCellSPH::~PairCellSPH()
   memory->destroy(pair_first);
   memory->destroy(pair_j);
   memory->destroy(pair_wr);
+  memory->destroy(cand_first);
+  memory->destroy(cand_j);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -96,16 +99,9 @@ double *PairCellSPH::drho_array() const
 
 /* ---------------------------------------------------------------------- */
 
-template <bool CONTINUITY> void PairCellSPH::find_pairs()
+void PairCellSPH::find_candidates()
 {
-  // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
-  const double *const x = atom->x ? atom->x[0] : nullptr;
-  const double *const v = atom->v ? atom->v[0] : nullptr;
-  const double *const rmass = atom->rmass;
   const int *const type = atom->type;
-  double *const drho = atom->dvector[idrho];
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
   // the protoplasm of one cell never meets another cell's through SPH, even where two particles
   // are within the kernel's support across two walls (a tissue): the walls between them are
   // closed, so no pressure, viscosity or density rate may cross. One molecule ID per cell.
@@ -115,40 +111,90 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
   const int *const numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
+  if (inum + 1 > maxcand_first) {
+    maxcand_first = inum + 1;
+    memory->destroy(cand_first);
+    memory->create(cand_first, maxcand_first, "pair:cand_first");
+  }
+  int ncand = 0;
+  for (int ii = 0; ii < inum; ii++) {
+    cand_first[ii] = ncand;
+    const int i = ilist[ii];
+    if (!fluid[type[i]]) continue;
+    const int *const jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    if (ncand + jnum > maxcand) {
+      maxcand = MAX(ncand + jnum, 2 * maxcand);
+      memory->grow(cand_j, maxcand, "pair:cand_j");
+    }
+    const tagint moli = molecule ? molecule[i] : 0;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!fluid[type[j]]) continue;
+      if (molecule && molecule[j] != moli) continue;
+      cand_j[ncand++] = j;
+    }
+  }
+  cand_first[inum] = ncand;
+  // the most pairs find_pairs can keep
+  if (ncand > maxpair) {
+    maxpair = ncand;
+    memory->destroy(pair_j);
+    memory->destroy(pair_wr);
+    memory->create(pair_j, maxpair, "pair:pair_j");
+    memory->create(pair_wr, maxpair, "pair:pair_wr");
+  }
   if (inum + 1 > maxfirst) {
     maxfirst = inum + 1;
     memory->destroy(pair_first);
     memory->create(pair_first, maxfirst, "pair:pair_first");
   }
+  cand_build = neighbor->ncalls;
+  cand_list = list;
+  cand_nall = atom->nlocal + atom->nghost;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <bool CONTINUITY> void PairCellSPH::find_pairs()
+{
+  // the candidates change only when the neighbour list does (atoms keep their indices between
+  // builds)
+  if (neighbor->ncalls != cand_build || list != cand_list ||
+      atom->nlocal + atom->nghost != cand_nall)
+    find_candidates();
+
+  // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
+  // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
+  const double *const x = atom->x ? atom->x[0] : nullptr;
+  const double *const v = atom->v ? atom->v[0] : nullptr;
+  const double *const rmass = atom->rmass;
+  const int *const type = atom->type;
+  double *const drho = atom->dvector[idrho];
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int inum = list->inum;
+  const int *const ilist = list->ilist;
+
   int npair = 0;
   for (int ii = 0; ii < inum; ii++) {
     pair_first[ii] = npair;
+    const int kend = cand_first[ii + 1];
+    if (cand_first[ii] == kend) continue;
     const int i = ilist[ii];
     const int itype = type[i];
-    if (!fluid[itype]) continue;
-    const int *const jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-    // room for every neighbour, so the inner loop does not check
-    if (npair + jnum > maxpair) {
-      maxpair = MAX(npair + jnum, 2 * maxpair);
-      memory->grow(pair_j, maxpair, "pair:pair_j");
-      memory->grow(pair_wr, maxpair, "pair:pair_wr");
-    }
     const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
     const double vxi = v[3 * i], vyi = v[3 * i + 1], vzi = v[3 * i + 2];
     const double mi = rmass[i];
-    const tagint moli = molecule ? molecule[i] : 0;
     const double *const cutsqi = cutsq[itype];
     const double *const si = s[itype];
     const double *const normi = wnorm[itype];
     // i's sum in a register: no neighbour is i itself, and starting from what earlier particles
     // added keeps the order of additions, and so every bit, of adding to drho[i] pair by pair
     double drhoi = CONTINUITY ? drho[i] : 0.0;
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
+    for (int k = cand_first[ii]; k < kend; k++) {
+      const int j = cand_j[k];
       const int jtype = type[j];
-      if (!fluid[jtype]) continue;
-      if (molecule && molecule[j] != moli) continue;
       const double delx = xi - x[3 * j];
       const double dely = yi - x[3 * j + 1];
       const double delz = zi - x[3 * j + 2];
@@ -645,5 +691,6 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
 double PairCellSPH::memory_usage()
 {
   return Pair::memory_usage() + (double) NQUANT * nmax * sizeof(double) +
-      (double) maxfirst * sizeof(int) + (double) maxpair * (sizeof(int) + sizeof(double));
+      (double) maxfirst * sizeof(int) + (double) maxpair * (sizeof(int) + sizeof(double)) +
+      (double) (maxcand_first + maxcand) * sizeof(int);
 }

@@ -69,9 +69,18 @@ class PairCellSPH : public Pair {
   int *pair_first, *pair_j;
   double *pair_wr;
   int maxfirst, maxpair;
+  // the candidates: the fluid pairs of one cell in the neighbour list (any distance), those of
+  // ilist[ii] cand_j[k] for k in cand_first[ii] .. cand_first[ii + 1] - 1, found once per
+  // neighbour-list build (the build count, list and atom count they were found with)
+  bigint cand_build;
+  class NeighList *cand_list;
+  int cand_nall;
+  int *cand_first, *cand_j;
+  int maxcand_first, maxcand;
 
   void allocate();
   bool pairs_of_continuity();
+  void find_candidates();
 
   // the one neighbour-list search both passes share: fills the pair list and, with CONTINUITY,
   // adds each pair's continuity terms (Eq. 7) to d_drho
