@@ -165,7 +165,6 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     find_candidates();
 
   // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
-  // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
   const double *const x = atom->x ? atom->x[0] : nullptr;
   const double *const v = atom->v ? atom->v[0] : nullptr;
   const double *const rmass = atom->rmass;
