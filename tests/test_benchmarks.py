@@ -8,10 +8,17 @@ belong in docs/performance.md and docs/tissue-benchmark.md, measured on a quiet 
    projection to 64 and 256 ranks with efficiencies between 0 and 100%; the balanced notch holds
    its particles evenly (imbalance < 1.1, LAMMPS's Nlocal) where the even split does not.
 2. tools/benchmark.sh: the stock, cell/sph and full-cell rows with their neighbour check.
+3. tools/bench/rate-ensemble.sh with 2 members, 2 speeds, a short inflation and 8% strain: a row
+   of windowed forces per member and speed, and the paired differences; member 2 (its fluid
+   displaced by 1e-9 um, -var jitter of in.inflate) inflates to another microstate than member 1,
+   so its forces differ (in the last digits at least), and a bad -var jitter stops in.inflate with
+   a message.
 """
 import os
 import re
 import subprocess
+
+import numpy as np
 
 import lmptest as T
 
@@ -59,11 +66,33 @@ def cell():
     T.check("benchmark.sh checks the neighbours of the two fluid-only cases", "neighbour check:" in out)
 
 
+def rate_ensemble():
+    d = T.workdir("rate-ensemble")
+    rc, out = script("bench/rate-ensemble.sh", d, 2,
+                     env=dict(RATES="0.5 0.25", STRAIN="0.08", INFLATE="2"))
+    print(out)
+    T.check("rate-ensemble.sh runs", rc == 0)
+    rows = re.findall(r"^  member (\d): +([-\d. ]+)$", out, re.M)
+    T.check("a row of windowed forces per member and speed (the 6% window only, up to 8% strain)",
+            len(rows) == 4, f"{rows}")
+    T.check("paired differences 0.5 / 0.25 m/s with their mean", "paired difference 0.5 / 0.25 m/s" in out
+            and re.search(r"^  mean: +[-+\d.% ]+$", out, re.M) is not None)
+    a1, a2 = (np.loadtxt(f"{d}/inflate-{k}.dat", ndmin=2)[-1] for k in (1, 2))
+    T.check("the displaced member inflates to another microstate", np.any(a1 != a2),
+            f"volumes {a1[2]:.12g} {a2[2]:.12g}")
+    _, log = T.lmp(T.INPUTS + "/in.inflate", cwd=d, check=False, log="log.jitter", variables=dict(
+        T.COARSE, dir=T.INPUTS, data=f"{d}/cell.data", nsteps=1, jitter=-3))
+    T.check("-var jitter -3 stops in.inflate with a message",
+            "in.inflate: -var jitter -3: expected a whole number >= 0" in log)
+
+
 def main():
     tissue()
     cell()
+    rate_ensemble()
     T.finish()
 
 
 if __name__ == "__main__":
     main()
+
