@@ -48,8 +48,8 @@ PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
     wnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1), pairs_build(-1),
     pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr), maxfirst(0), maxpair(0),
-    cand_build(-1), cand_list(nullptr), cand_nall(-1), cand_first(nullptr), cand_j(nullptr),
-    maxcand_first(0), maxcand(0)
+    cand_build(-1), cand_nall(-1), cand_first(nullptr), cand_j(nullptr), maxcand_first(0),
+    maxcand(0)
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -151,7 +151,6 @@ void PairCellSPH::find_candidates()
     memory->create(pair_first, maxfirst, "pair:pair_first");
   }
   cand_build = neighbor->ncalls;
-  cand_list = list;
   cand_nall = atom->nlocal + atom->nghost;
 }
 
@@ -160,10 +159,8 @@ void PairCellSPH::find_candidates()
 template <bool CONTINUITY> void PairCellSPH::find_pairs()
 {
   // the candidates change only when the neighbour list does (atoms keep their indices between
-  // builds)
-  if (neighbor->ncalls != cand_build || list != cand_list ||
-      atom->nlocal + atom->nghost != cand_nall)
-    find_candidates();
+  // builds; a new list, after an init, is built before it is used)
+  if (neighbor->ncalls != cand_build || atom->nlocal + atom->nghost != cand_nall) find_candidates();
 
   // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
   const double *const x = atom->x ? atom->x[0] : nullptr;
