@@ -49,7 +49,7 @@ PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     wnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1), pairs_build(-1),
     pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr), maxfirst(0), maxpair(0),
     cand_build(-1), cand_nall(-1), cand_first(nullptr), cand_j(nullptr), maxcand_first(0),
-    maxcand(0)
+    maxcand(0), s_uniform(false), s_uniform_value(0.0), wnorm_uniform(0.0)
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -152,6 +152,49 @@ void PairCellSPH::find_candidates()
   }
   cand_build = neighbor->ncalls;
   cand_nall = atom->nlocal + atom->nghost;
+
+  // whether one smoothing length serves every fluid type pair (pair_coeff may change between runs,
+  // and a run's init always builds the neighbour lists anew, so this is the place to look)
+  s_uniform = true;
+  int first_fluid = 0;
+  for (int it = 1; it <= atom->ntypes; it++)
+    for (int jt = it; jt <= atom->ntypes; jt++) {
+      if (!fluid[it] || !fluid[jt]) continue;
+      if (!first_fluid) {
+        first_fluid = it;
+        s_uniform_value = s[it][jt];
+        wnorm_uniform = wnorm[it][jt];
+      } else if (s[it][jt] != s_uniform_value || wnorm[it][jt] != wnorm_uniform)
+        s_uniform = false;
+    }
+}
+
+/* ----------------------------------------------------------------------
+   The kernel factor wr = (dW/dr) / r of n pairs of one type pair (smoothing length s, prefactor
+   kernel_dwdr_norm(s)), from r^2 in place. The compiler turns the kernel's two brackets into a
+   select and runs the loop in SIMD lanes, as this file is compiled without errno for sqrt and
+   without trapping math (CMakeLists.txt). On x86-64 it is compiled twice, for the baseline (SSE2,
+   2 lanes) and for AVX2 (4 lanes), and the loader picks what the CPU has (GCC/Clang function
+   multi-versioning): lmp itself is usually built for the baseline. Square roots and divisions
+   are correctly rounded in every lane, and nothing is contracted into FMA (CMakeLists.txt), so
+   every version gives the bits of one pair at a time.
+------------------------------------------------------------------------- */
+
+#if defined(__x86_64__) && defined(__linux__) && !defined(CELLMECH_NO_SIMD_CLONES) &&             \
+    ((defined(__clang__) && __clang_major__ >= 14) || (!defined(__clang__) && defined(__GNUC__) && \
+                                                       __GNUC__ >= 6))
+#define CELLMECH_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define CELLMECH_SIMD_CLONES
+#endif
+
+CELLMECH_SIMD_CLONES static void kernel_wr_sweep(double *__restrict w, int n, double s,
+                                                 double norm)
+{
+  for (int k = 0; k < n; k++) {
+    const double r = sqrt(w[k]);
+    w[k] = kernel_dwdr(r, s, norm) / r;
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -186,30 +229,43 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     const double *const cutsqi = cutsq[itype];
     const double *const si = s[itype];
     const double *const normi = wnorm[itype];
-    // i's sum in a register: no neighbour is i itself, and starting from what earlier particles
-    // added keeps the order of additions, and so every bit, of adding to drho[i] pair by pair
-    double drhoi = CONTINUITY ? drho[i] : 0.0;
+    // three sweeps over i's pairs, so that the square roots and divisions of the kernel, which
+    // the loop waits on, run side by side in SIMD lanes: the distance test writes the pairs inside
+    // the support with their r^2, the kernel sweep turns r^2 into wr in place, the continuity
+    // sweep adds the terms of Eq. 7
+    const int first = npair;
     for (int k = cand_first[ii]; k < kend; k++) {
       const int j = cand_j[k];
-      const int jtype = type[j];
       const double delx = xi - x[3 * j];
       const double dely = yi - x[3 * j + 1];
       const double delz = zi - x[3 * j + 2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsqi[jtype]) continue;
-      const double r = sqrt(rsq);
-      const double wr = kernel_dwdr(r, si[jtype], normi[jtype]) / r;
+      if (rsq >= cutsqi[type[j]]) continue;
       pair_j[npair] = j;
-      pair_wr[npair] = wr;
+      pair_wr[npair] = rsq;
       npair++;
-      if (CONTINUITY) {
-        const double vdotw = continuity_term(vxi - v[3 * j], vyi - v[3 * j + 1], vzi - v[3 * j + 2],
-                                             delx, dely, delz, wr);
-        drhoi += rmass[j] * vdotw;
-        if (newton_pair || j < nlocal) drho[j] += mi * vdotw;
-      }
     }
-    if (CONTINUITY) drho[i] = drhoi;
+    if (s_uniform)
+      kernel_wr_sweep(pair_wr + first, npair - first, s_uniform_value, wnorm_uniform);
+    else
+      for (int k = first; k < npair; k++) {
+        const int jtype = type[pair_j[k]];
+        const double r = sqrt(pair_wr[k]);
+        pair_wr[k] = kernel_dwdr(r, si[jtype], normi[jtype]) / r;
+      }
+    if (!CONTINUITY) continue;
+    // i's sum in a register: no neighbour is i itself, and starting from what earlier particles
+    // added keeps the order of additions, and so every bit, of adding to drho[i] pair by pair
+    double drhoi = drho[i];
+    for (int k = first; k < npair; k++) {
+      const int j = pair_j[k];
+      const double vdotw =
+          continuity_term(vxi - v[3 * j], vyi - v[3 * j + 1], vzi - v[3 * j + 2], xi - x[3 * j],
+                          yi - x[3 * j + 1], zi - x[3 * j + 2], pair_wr[k]);
+      drhoi += rmass[j] * vdotw;
+      if (newton_pair || j < nlocal) drho[j] += mi * vdotw;
+    }
+    drho[i] = drhoi;
   }
   pair_first[inum] = npair;
 }

@@ -76,6 +76,10 @@ class PairCellSPH : public Pair {
   int cand_nall;
   int *cand_first, *cand_j;
   int maxcand_first, maxcand;
+  // one smoothing length for every pair of fluid types (the usual one fluid type): it and its
+  // kernel_dwdr_norm(s), for the kernel sweep of all of an atom's pairs at once
+  bool s_uniform;
+  double s_uniform_value, wnorm_uniform;
 
   void allocate();
   bool pairs_of_continuity();
