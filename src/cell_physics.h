@@ -159,6 +159,14 @@ inline double kernel_dwdr(double r, double s)
   return kernel_dwdr(r, s, kernel_dwdr_norm(s));
 }
 
+// (dW/dr) / r from r^2: the factor wr of grad_i W_ij = wr r_ij (Eq. 5, Eq. 7) that the pair loops
+// use. No branch of its own, so a loop over pairs calling it runs in SIMD lanes.
+inline double kernel_wr(double rsq, double s, double norm)
+{
+  const double r = std::sqrt(rsq);
+  return kernel_dwdr(r, s, norm) / r;
+}
+
 // Tait equation of state with background turgor P0 (Eq. 6), kappa = rho0 c^2 / 7.
 inline double tait_pressure(double rho, double rho0, double c, double P0)
 {

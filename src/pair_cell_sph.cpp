@@ -156,28 +156,28 @@ void PairCellSPH::find_candidates()
   // whether one smoothing length serves every fluid type pair (pair_coeff may change between runs,
   // and a run's init always builds the neighbour lists anew, so this is the place to look)
   s_uniform = true;
-  int first_fluid = 0;
+  bool seen = false;
   for (int it = 1; it <= atom->ntypes; it++)
     for (int jt = it; jt <= atom->ntypes; jt++) {
       if (!fluid[it] || !fluid[jt]) continue;
-      if (!first_fluid) {
-        first_fluid = it;
+      if (!seen) {
+        seen = true;
         s_uniform_value = s[it][jt];
         wnorm_uniform = wnorm[it][jt];
-      } else if (s[it][jt] != s_uniform_value || wnorm[it][jt] != wnorm_uniform)
+      } else if (s[it][jt] != s_uniform_value)
         s_uniform = false;
     }
 }
 
 /* ----------------------------------------------------------------------
-   The kernel factor wr = (dW/dr) / r of n pairs of one type pair (smoothing length s, prefactor
-   kernel_dwdr_norm(s)), from r^2 in place. The compiler turns the kernel's two brackets into a
-   select and runs the loop in SIMD lanes, as this file is compiled without errno for sqrt and
-   without trapping math (CMakeLists.txt). On x86-64 it is compiled twice, for the baseline (SSE2,
-   2 lanes) and for AVX2 (4 lanes), and the loader picks what the CPU has (GCC/Clang function
-   multi-versioning): lmp itself is usually built for the baseline. Square roots and divisions
-   are correctly rounded in every lane, and nothing is contracted into FMA (CMakeLists.txt), so
-   every version gives the bits of one pair at a time.
+   The kernel factor wr = (dW/dr) / r (kernel_wr) of n pairs of one type pair (smoothing length s,
+   prefactor kernel_dwdr_norm(s)), from r^2 in place. The compiler turns the kernel's two brackets
+   into a select and runs the loop in SIMD lanes, as this file is compiled without errno for sqrt
+   and without trapping math (CMakeLists.txt). On x86-64 it is compiled twice, for the baseline
+   (SSE2, 2 lanes) and for AVX2 (4 lanes), and the loader picks what the CPU has (GCC/Clang
+   function multi-versioning): lmp itself is usually built for the baseline. Square roots and
+   divisions are correctly rounded in every lane, and nothing is contracted into FMA
+   (CMakeLists.txt), so every version gives the bits of one pair at a time.
 ------------------------------------------------------------------------- */
 
 #if defined(__x86_64__) && defined(__linux__) && !defined(CELLMECH_NO_SIMD_CLONES) &&             \
@@ -191,10 +191,7 @@ void PairCellSPH::find_candidates()
 CELLMECH_SIMD_CLONES static void kernel_wr_sweep(double *__restrict w, int n, double s,
                                                  double norm)
 {
-  for (int k = 0; k < n; k++) {
-    const double r = sqrt(w[k]);
-    w[k] = kernel_dwdr(r, s, norm) / r;
-  }
+  for (int k = 0; k < n; k++) w[k] = kernel_wr(w[k], s, norm);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -250,8 +247,7 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     else
       for (int k = first; k < npair; k++) {
         const int jtype = type[pair_j[k]];
-        const double r = sqrt(pair_wr[k]);
-        pair_wr[k] = kernel_dwdr(r, si[jtype], normi[jtype]) / r;
+        pair_wr[k] = kernel_wr(pair_wr[k], si[jtype], normi[jtype]);
       }
     if (!CONTINUITY) continue;
     // i's sum in a register: no neighbour is i itself, and starting from what earlier particles
@@ -681,8 +677,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
     return 0.0;
   }
   const double *rho = atom->dvector[irho];
-  const double r = sqrt(rsq);
-  const double wr = kernel_dwdr(r, s[itype][jtype]) / r;
+  const double wr = kernel_wr(rsq, s[itype][jtype], wnorm[itype][jtype]);
   fforce = sph_pressure_fpair(atom->rmass[i], atom->rmass[j],
                               pressure(itype, rho[i]) / (rho[i] * rho[i]),
                               pressure(jtype, rho[j]) / (rho[j] * rho[j]), wr);

@@ -184,6 +184,22 @@ TEST(Kernel, DerivativeIsFiniteDifferenceOfKernel)
   }
 }
 
+TEST(Kernel, PairFactorIsdWdrOverRBitForBit)
+{
+  // kernel_wr(r^2) is what every pair loop uses for (dW/dr) / r; pair cell/sph's results are
+  // documented as bit-identical to the pair-by-pair form kernel_dwdr(r, s) / r
+  // (docs/performance.md), so any rewrite of it (a cheaper form, a reciprocal) must show up here,
+  // not as a drift of the suite's chaotic runs
+  for (double s : {0.5, 1.2, 3.2, 6.4}) {
+    const double norm = kernel_dwdr_norm(s);
+    for (int k = 1; k <= 4000; k++) {
+      const double r = k * 2.0 * s / 4000.0;
+      EXPECT_EQ(kernel_wr(r * r, s, norm), kernel_dwdr(std::sqrt(r * r), s) / std::sqrt(r * r))
+          << "s = " << s << ", r/s = " << r / s;
+    }
+  }
+}
+
 TEST(Kernel, ExactlyZeroOutsideSupport)
 {
   // compact support 2s: the pair cutoff is 2s, so W and dW/dr must vanish exactly there and beyond
