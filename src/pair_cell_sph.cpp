@@ -198,9 +198,14 @@ CELLMECH_SIMD_CLONES static void kernel_wr_sweep(double *__restrict w, int n, do
 
 template <bool CONTINUITY> void PairCellSPH::find_pairs()
 {
-  // the candidates change only when the neighbour list does (atoms keep their indices between
-  // builds; a new list, after an init, is built before it is used)
-  if (neighbor->ncalls != cand_build || atom->nlocal + atom->nghost != cand_nall) find_candidates();
+  // the candidates change only when the neighbour list does: atoms keep their indices between
+  // builds, and within a run every build counts up neighbor->ncalls. Every setup (of a run, a
+  // minimisation, a rerun frame) builds the lists anew and then sets that count back to 0, so a
+  // run after a run 0 would see the count it ended with although the atoms were re-sorted or
+  // moved in between (displace_atoms, read_dump, the sort of the setup): a setup always searches.
+  if (update->setupflag || neighbor->ncalls != cand_build ||
+      atom->nlocal + atom->nghost != cand_nall)
+    find_candidates();
 
   // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
   const double *const x = atom->x ? atom->x[0] : nullptr;

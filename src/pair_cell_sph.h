@@ -71,7 +71,7 @@ class PairCellSPH : public Pair {
   int maxfirst, maxpair;
   // the candidates: the fluid pairs of one cell in the neighbour list (any distance), those of
   // ilist[ii] cand_j[k] for k in cand_first[ii] .. cand_first[ii + 1] - 1, found once per
-  // neighbour-list build (the build count and atom count they were found with)
+  // neighbour-list build (the build count and atom count they were found with; every setup)
   bigint cand_build;
   int cand_nall;
   int *cand_first, *cand_j;

@@ -8,19 +8,29 @@ The coarse stiff cell, inflated, is pressed by the top plate at 0.5 m/s for 12.8
  * respa with one level is Verlet: every recorded column equal to round-off (1e-12 relative);
    fix cell/fluid then advances density and mass by the same step at the same place of the step;
  * respa 3 (outer step 0.003 us, the fluid's acoustic limit 0.25 s/c at level 4) reproduces the
-   single-level run, each quantity averaged over the second half of the run: mean pressure and
-   enclosed volume within 1% (the issue's criterion; halving the single-level step moves them by
-   0.2% and 0.005%, printed); the equatorial force and the plate force within 5%: this coarse
-   cell's contact-by-contact forces move by about 1% when the single-level step is merely halved
+   single-level run, each quantity averaged over the second half of the run and then over an
+   ensemble of 4 microstates (the run from the restart as it is, and 3 with the fluid displaced by
+   1e-9 um, in.compress -var jitter): mean pressure and enclosed volume within 1% (the issue's
+   criterion; halving the single-level step moves them by 0.2% and 0.005%, printed). One
+   microstate is not enough: the mean pressure of this 461-particle fluid is its density to 1e-5
+   (kappa / P = 30), which the fluid's packing against the wall sets, and the 4 microstates of one
+   scheme spread by 0.9% in it (printed), as much as the tolerance; the ensemble's standard error
+   is printed beside its mean. The ensemble samples the compression, not the inflation before it:
+   the same inflation with the kernel's arithmetic rearranged (another order of roundings, no other
+   change) gave an inflated state whose ensemble read +1.10% +- 0.10% where this one reads about
+   +0.45% +- 0.28%, so the 1% holds for this state and is at the edge of what the coarse cell
+   resolves. The equatorial force and the plate force within 5%: this coarse cell's
+   contact-by-contact forces move by about 1% when the single-level step is merely halved
    (printed), and respa's impulses from the fluid every 3 wall steps shift them by 2-3%. The
    failure this bound is for is larger: the plates on the inner level, their force sampled once
    per outer step, read 10% low in this run (22-28% at level 4, docs/performance.md);
  * the same with 'hybrid 2 2 2' in place of 'pair 2', and with respa from the run 0 on (the
    fix's setup under respa), to round-off;
  * 2 ranks give the 1-rank run to 1e-4 under respa 3 as under Verlet (ghost velocities);
- * bad input stops with a message: -var respa not a whole number >= 1 (in.compress); pair
-   cell/sph on an inner level with fix cell/fluid, by the 'pair' keyword (fix cell/fluid) and by
-   the 'hybrid' keyword (pair cell/sph's check in the run's setup).
+ * bad input stops with a message: -var respa not a whole number >= 1, -var jitter not a whole
+   number >= 0 (in.compress); pair cell/sph on an inner level with fix cell/fluid, by the 'pair'
+   keyword (fix cell/fluid) and by the 'hybrid' keyword (pair cell/sph's check in the run's
+   setup).
 """
 import numpy as np
 
@@ -74,16 +84,24 @@ def main():
 
     _, _, half = compress(d, "verlet-half", dt=0.0005, every=120)
     _, _, r3 = compress(d, "respa3", respa=3)
+    # the ensemble: this restart as it is (seed 0) and displaced by 1e-9 um (seeds 1-3)
+    seeds = (1, 2, 3)
+    ens = {"verlet": [verlet] + [compress(d, f"verlet-j{k}", jitter=k)[2] for k in seeds],
+           "respa3": [r3] + [compress(d, f"respa3-j{k}", respa=3, jitter=k)[2] for k in seeds]}
     # a record every 0.06 us in each run; their first records depend on the restart's step count
     # modulo each run's record interval
-    spans = [(a[1, 1] - a[0, 1], a[-1, 1]) for a in (verlet, half, r3)]
-    T.check("the three runs record every 0.06 us up to the same time",
+    runs = [half] + ens["verlet"] + ens["respa3"]
+    spans = [(a[1, 1] - a[0, 1], a[-1, 1]) for a in runs]
+    T.check(f"the {len(runs)} runs record every 0.06 us up to the same time",
             all(abs(dt - 0.06) < 1e-9 and abs(end - spans[0][1]) < 0.06 for dt, end in spans),
             " ".join(f"{dt:.4g}/{end:.4g}" for dt, end in spans))
-    # the second half of the run, 3-10% strain: past the first contact's transient
-    late = [a[:, 1] >= 0.5 * verlet[-1, 1] for a in (verlet, half, r3)]
-    T.check("the top plate presses the wall over the second half", np.all(verlet[late[0], 3] > 0),
-            f"{late[0].sum()} records")
+
+    def late(a):
+        """the second half of the run, 3-10% strain: past the first contact's transient"""
+        return a[a[:, 1] >= 0.5 * verlet[-1, 1]]
+
+    T.check("the top plate presses the wall over the second half", np.all(late(verlet)[:, 3] > 0),
+            f"{len(late(verlet))} records")
     # means over it: at one instant the plate force follows the wall's rings and the fluid rings
     # with acoustic waves whose phase depends on the step
     quantities = {    # name: (column(s) of step t eps Ftop Fbot Feq P broken leak V Vf, tolerance)
@@ -93,16 +111,27 @@ def main():
         "plate force (Ftop + Fbot) / 2": ((3, 4), 0.05),
     }
     for name, (cols, tol) in quantities.items():
-        q = [a[m][:, cols].mean() for a, m in zip((verlet, half, r3), late)]
-        err_dt, err_respa = q[1] / q[0] - 1, q[2] / q[0] - 1
-        print(f"{name}: dt 0.001 {q[0]:.6g}; dt 0.0005 {err_dt:+.3%}; respa 3 {err_respa:+.3%} "
-              f"(tolerance {tol:.0%})")
-        T.check(f"respa 3 = single level: {name}", abs(err_respa) <= tol,
+        q = {k: np.array([late(a)[:, cols].mean() for a in v]) for k, v in ens.items()}
+        ref = q["verlet"].mean()
+        err_dt = late(half)[:, cols].mean() / q["verlet"][0] - 1
+        err_one = q["respa3"][0] / q["verlet"][0] - 1
+        err_respa = q["respa3"].mean() / ref - 1
+        spread = {k: np.ptp(x) / ref for k, x in q.items()}
+        # the standard error of the difference of the two ensemble means
+        sem = np.sqrt(sum(x.var(ddof=1) for x in q.values()) / len(seeds + (0,))) / ref
+        print(f"{name}: dt 0.001 {ref:.6g} (ensemble mean); microstate 0: dt 0.0005 {err_dt:+.3%}, "
+              f"respa 3 {err_one:+.3%}; spread over the 4 microstates: Verlet {spread['verlet']:.3%}, "
+              f"respa 3 {spread['respa3']:.3%}; ensemble means: respa 3 {err_respa:+.3%} "
+              f"+- {sem:.3%} (tolerance {tol:.0%})")
+        T.check(f"respa 3 = single level: {name} (ensemble of 4)", abs(err_respa) <= tol,
                 f"{err_respa:+.3%} vs {tol:.0%}")
 
     rc, log, _ = compress(d, "bad-respa", check=False, respa=2.5)
     T.check("-var respa 2.5: in.compress stops with its message", rc != 0 and
             "in.compress: -var respa 2.5: expected a whole number >= 1" in log)
+    rc, log, _ = compress(d, "bad-jitter", check=False, jitter=0.5)
+    T.check("-var jitter 0.5: in.compress stops with its message", rc != 0 and
+            "in.compress: -var jitter 0.5: expected a whole number >= 0" in log)
     rc, log, _ = compress(d, "bad-pair", with_run_style("run_style respa 2 3 pair 1 bond 1 angle 1"),
                           check=False)
     T.check("pair styles on the inner level: fix cell/fluid stops with its message", rc != 0 and
