@@ -20,12 +20,17 @@ keeps positions, velocities, masses and densities to the last bit): the forces o
 (dump, %.17g) must agree to 1e-10 of the largest force. The data file orders the atoms by ID where
 the running LAMMPS has them in another order, so the sums of pairs come in another order: round-off
 of a few eps per pair force summed over ~60 pairs, far below 1e-10; a stale pair list is off by
-whole pair forces (the code before the fix: 0.76, 1.14 and 3.8e-3 of the largest force in 1-3).
+whole pair forces (the code before the fix: 0.76, 1.14 and 3.8e-3 of the largest force in 1-3,
+NaN forces in 4).
  1. run 0, then every fluid particle displaced at random by up to 0.3 um (neighbour sets change:
     the support is 2.4 um), then run 0 again;
  2. the same with a 100-step run before the displacement (the atoms move but stay within the
     skin: no re-neighbouring, the count ends where the setup left it);
- 3. rerun of a dump of two frames (the lattice, then the displaced lattice): each frame's forces.
+ 3. rerun of a dump of two frames (the lattice, then the displaced lattice): each frame's forces;
+ 4. the coarse cell with every style of the model (wall elements, cell/lj84, cell/virtual,
+    cell/sph, fix cell/fluid), with the tether wall and with the membrane wall: run 0, every atom
+    displaced by up to 0.2 um, run 0. The fresh start reads the data file with the same
+    force field (cell-model.lmp); none of the styles may keep anything of the atoms' old places.
 """
 import numpy as np
 
@@ -109,6 +114,34 @@ def main():
     T.check("rerun wrote both frames", len(got) == 2, f"{len(got)}")
     for k, frame in enumerate(got):
         compare(f"rerun frame {k + 1}", frame, fresh(d, f"rr{k}.data", f"rr{k}-fresh.dump"))
+
+    # the whole cell: every style of the model between two runs
+    T.coarse_cell(d)
+    for wall in ("tether", "membrane"):
+        model = f"""
+units           micro
+atom_style      molecular
+boundary        f f f
+atom_modify     map array
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+read_data       DATA fix cell NULL cell extra/special/per/atom 6
+group           wall type 1
+group           fluid type 2
+variable        dir index {T.INPUTS}
+variable        wall index {wall}
+""" + "".join(f"variable        {k} index {v}\n" for k, v in T.COARSE.items()) + f"""
+include         {T.INPUTS}/cell-model.lmp
+fix             integrate all nve
+fix             osmosis fluid cell/fluid Pi 0 Lp 0
+"""
+        tag = f"cell-{wall}"
+        T.lmp(model.replace("DATA", "cell.data") + "velocity all create 1e8 5512 dist gaussian\n"
+              "run 0\ndisplace_atoms all random 0.2 0.2 0.2 4411 units box\nrun 0\n" +
+              dump(f"{tag}.dump") + f"write_data {tag}.data nocoeff\n", cwd=d, log=f"log.{tag}")
+        T.lmp(model.replace("DATA", f"{tag}.data") + "run 0\n" + dump(f"{tag}-fresh.dump"), cwd=d,
+              log=f"log.{tag}-fresh")
+        compare(f"the coarse cell, {wall} wall: run 0, atoms moved, run 0",
+                forces(f"{d}/{tag}.dump"), forces(f"{d}/{tag}-fresh.dump"))
     T.finish()
 
 
