@@ -8,18 +8,19 @@ The coarse stiff cell, inflated, is pressed by the top plate at 0.5 m/s for 12.8
  * respa with one level is Verlet: every recorded column equal to round-off (1e-12 relative);
    fix cell/fluid then advances density and mass by the same step at the same place of the step;
  * respa 3 (outer step 0.003 us, the fluid's acoustic limit 0.25 s/c at level 4) reproduces the
-   single-level run, each quantity averaged over the second half of the run and then over an
-   ensemble of 4 microstates (the run from the restart as it is, and 3 with the fluid displaced by
-   1e-9 um, in.compress -var jitter): mean pressure and enclosed volume within 1% (the issue's
-   criterion; halving the single-level step moves them by 0.2% and 0.005%, printed). One
-   microstate is not enough: the mean pressure of this 461-particle fluid is its density to 1e-5
-   (kappa / P = 30), which the fluid's packing against the wall sets, and the 4 microstates of one
-   scheme spread by 0.9% in it (printed), as much as the tolerance; the ensemble's standard error
-   is printed beside its mean. The ensemble samples the compression, not the inflation before it:
-   the same inflation with the kernel's arithmetic rearranged (another order of roundings, no other
-   change) gave an inflated state whose ensemble read +1.10% +- 0.10% where this one reads about
-   +0.45% +- 0.28%, so the 1% holds for this state and is at the edge of what the coarse cell
-   resolves. The equatorial force and the plate force within 5%: this coarse cell's
+   single-level run, each quantity averaged over the second half of the run, their relative
+   difference taken for each of 6 microstates of the inflated cell (the inflation as it is, and 5
+   with its fluid displaced by 1e-9 um at the start, in.inflate -var jitter; each compressed both
+   ways from its own restart) and averaged over them: mean pressure and enclosed volume within 1%
+   (the issue's criterion; halving the single-level step moves them by 0.2% and 0.005%, printed).
+   One microstate is not enough: the mean pressure of this 461-particle fluid is its density to
+   1e-5 (kappa / P = 30), which the fluid's packing against the wall sets, and respa 3's shift of
+   it ranges over 0.3-1.3% between microstates (6 of them with this code; 0.0-1.5% with the
+   kernel's arithmetic rearranged, another order of roundings and nothing else): a single one
+   fails 1% for a quarter of them, which round-off picks. Their mean, +0.69% +- 0.14% (printed with
+   its standard error), is what respa does to this cell, and is what the 1% applies to. It is
+   close to 1%: respa's impulses from the fluid every 3 wall steps do pack it differently. The
+   equatorial force and the plate force within 5%: this coarse cell's
    contact-by-contact forces move by about 1% when the single-level step is merely halved
    (printed), and respa's impulses from the fluid every 3 wall steps shift them by 2-3%. The
    failure this bound is for is larger: the plates on the inner level, their force sampled once
@@ -38,6 +39,7 @@ import lmptest as T
 
 COARSE = dict(T.COARSE)
 # a record every 0.06 us: whole outer steps for respa 1, 2, 3 (in.compress counts every in dt)
+NSTATES = 6      # inflated microstates the respa-Verlet comparison is averaged over
 RUN = dict(COARSE, dir=T.INPUTS, restart="inflated.restart", vplate=0.5, strain=0.10, every=60)
 COLUMNS = ("t", "eps", "Ftop", "Fbot", "Feq", "P", "broken", "leak", "V", "Vfluid")
 
@@ -84,10 +86,16 @@ def main():
 
     _, _, half = compress(d, "verlet-half", dt=0.0005, every=120)
     _, _, r3 = compress(d, "respa3", respa=3)
-    # the ensemble: this restart as it is (seed 0) and displaced by 1e-9 um (seeds 1-3)
-    seeds = (1, 2, 3)
-    ens = {"verlet": [verlet] + [compress(d, f"verlet-j{k}", jitter=k)[2] for k in seeds],
-           "respa3": [r3] + [compress(d, f"respa3-j{k}", respa=3, jitter=k)[2] for k in seeds]}
+    # the ensemble: this inflated cell (microstate 0) and NSTATES - 1 more, inflated from the
+    # fluid displaced by 1e-9 um (in.inflate -var jitter), each compressed both ways
+    ens = {"verlet": [verlet], "respa3": [r3]}
+    for k in range(1, NSTATES):
+        T.lmp(T.INPUTS + "/in.inflate", cwd=d, log=f"log.inflate-j{k}", variables=dict(
+            COARSE, dir=T.INPUTS, data="cell.data", nsteps=4000, every=1000,
+            out=f"inflate-j{k}.dat", restart_out=f"inflated-j{k}.restart", jitter=k))
+        ens["verlet"].append(compress(d, f"verlet-j{k}", restart=f"inflated-j{k}.restart")[2])
+        ens["respa3"].append(compress(d, f"respa3-j{k}", restart=f"inflated-j{k}.restart",
+                                      respa=3)[2])
     # a record every 0.06 us in each run; their first records depend on the restart's step count
     # modulo each run's record interval
     runs = [half] + ens["verlet"] + ens["respa3"]
@@ -112,19 +120,17 @@ def main():
     }
     for name, (cols, tol) in quantities.items():
         q = {k: np.array([late(a)[:, cols].mean() for a in v]) for k, v in ens.items()}
-        ref = q["verlet"].mean()
         err_dt = late(half)[:, cols].mean() / q["verlet"][0] - 1
-        err_one = q["respa3"][0] / q["verlet"][0] - 1
-        err_respa = q["respa3"].mean() / ref - 1
-        spread = {k: np.ptp(x) / ref for k, x in q.items()}
-        # the standard error of the difference of the two ensemble means
-        sem = np.sqrt(sum(x.var(ddof=1) for x in q.values()) / len(seeds + (0,))) / ref
-        print(f"{name}: dt 0.001 {ref:.6g} (ensemble mean); microstate 0: dt 0.0005 {err_dt:+.3%}, "
-              f"respa 3 {err_one:+.3%}; spread over the 4 microstates: Verlet {spread['verlet']:.3%}, "
-              f"respa 3 {spread['respa3']:.3%}; ensemble means: respa 3 {err_respa:+.3%} "
-              f"+- {sem:.3%} (tolerance {tol:.0%})")
-        T.check(f"respa 3 = single level: {name} (ensemble of 4)", abs(err_respa) <= tol,
-                f"{err_respa:+.3%} vs {tol:.0%}")
+        # respa 3 against Verlet from the same inflated cell, one difference per microstate
+        rel = q["respa3"] / q["verlet"] - 1
+        mean, sem = rel.mean(), rel.std(ddof=1) / np.sqrt(len(rel))
+        print(f"{name}: dt 0.001 {q['verlet'][0]:.6g} (microstate 0; over the {len(rel)} "
+              f"microstates {np.ptp(q['verlet']) / q['verlet'].mean():.2%} apart); dt 0.0005 "
+              f"{err_dt:+.3%} (microstate 0); respa 3 per microstate "
+              + " ".join(f"{x:+.2%}" for x in rel) + f", mean {mean:+.3%} +- {sem:.3%} "
+              f"(tolerance {tol:.0%})")
+        T.check(f"respa 3 = single level: {name} (mean over {len(rel)} microstates)",
+                abs(mean) <= tol, f"{mean:+.3%} vs {tol:.0%}")
 
     rc, log, _ = compress(d, "bad-respa", check=False, respa=2.5)
     T.check("-var respa 2.5: in.compress stops with its message", rc != 0 and
