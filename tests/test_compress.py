@@ -18,7 +18,8 @@ round-off decides (20 us of a chaotic fluid). Over six microstates of this same 
 (tools/bench/rate-ensemble.sh) the two rates differ by 3.3% +- 1.0% at 14% strain and this check
 passes for 2 of the 6, this cell's among them. A change of round-off alone (compiler, flags, the
 order of a sum) can therefore fail it without any change of physics; measure with that script
-before reading a failure as one. At the paper's resolution one run moves by only 0.13-0.6%, but
+before reading a failure as one. (The kernel's arithmetic rearranged, another order of roundings
+and nothing else, reads +0.48 +0.05 +5.34 -0.10%, docs/performance.md.) At the paper's resolution one run moves by only 0.13-0.6%, but
 the speeds themselves differ by up to 1.9% (0.5 against 0.25 m/s, at 6% strain) and 3.1% (0.25
 against 0.125 m/s, at 14%) over a few microstates (same document): a 2% criterion is marginal
 there as well.

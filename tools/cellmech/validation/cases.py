@@ -202,7 +202,8 @@ def case_breathing_fluid(run, level, ctx):
         ax.legend(fontsize=7)
     axes[-1].set_xlabel("omega (rad/us)")
     _save(fig, ctx, "breathing-fluid.png", e)
-    e.note("Modes: the strongest spectral peaks of the mean wall radius (FFTW, Hann window; a cubic "
+    e.note(f"The wall is kicked inward at {BREATHING_KICK:g} m/s and released. "
+           "Modes: the strongest spectral peaks of the mean wall radius (FFTW, Hann window; a cubic "
            "fit over the record taken out first, peaks with fewer than 4 periods in the record "
            "ignored), in increasing frequency; 3 at c = 50 m/s, 2 otherwise. Eq. A4 roots are computed for the "
            "cell's own wall mass (rho_s t = M / 4 pi R^2) at the inflated radius, with E t = 3 G t0.")
