@@ -1,59 +1,79 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Issue 3, check 6 (coarse, as CI runs it): quasistatic compression of the inflated stiff cell
-between plates to 20% strain (lammps-inputs/in.compress), at two plate speeds, 0.5 and 0.25 m/s.
-Both are slow against the cell's relaxation (about 1 us; 20% strain takes 24 and 48 us), so the
-force-strain curve must not depend on the rate.
+"""Issue 3, check 6, at the paper's resolution (level 4: 2562 wall nodes, 3500 fluid particles; about
+2 minutes on one core): quasistatic compression of the inflated stiff cell between plates to 20%
+strain (lammps-inputs/in.compress), at two plate speeds, 0.5 and 0.25 m/s. Both are slow against
+the cell's relaxation (about 1 us; 20% strain takes 24 and 48 us), so the force-strain curve must
+not depend on the rate.
 
-The coarse wall meets the plates ring of nodes by ring of nodes, which puts steps of 2-3% strain
-into the curve; forces are therefore compared as means over 4%-wide strain windows centred at
-6, 10, 14 and 18% (each window spans at least one step). Asserted:
+The wall meets the plates ring of nodes by ring of nodes, which puts steps into the curve; forces
+are therefore compared as means over 4%-wide strain windows centred at 6, 10, 14 and 18%.
+Asserted:
  * the two rates agree within 2% in every window (the issue's criterion);
- * the curve is smooth in the sense that matters: the windowed force rises monotonically with
-   strain, and both plates carry the same load (force balance of a quasistatic cell, 5%);
- * no fluid leaks and the mean pressure stays positive.
+ * the windowed force rises monotonically with strain;
+ * both plates carry the same load (5%) once the cell's own acceleration is taken out: after the
+   first contact the cell rattles between the plates, and the bottom plate's force less the top
+   one's is the rate of change of its z momentum (in.compress records it), which over a window is
+   the momentum's change over the window's time. At 0.5 m/s the raw difference is 6.4% in the
+   first window (the cell, at rest, brought to half the plate speed: m v / 2 over the window's
+   4.8 us is about 7 uN), printed beside the corrected one;
+ * the cell reaches 20% strain with positive pressure, no fluid leaks, and the main job's CSV
+   tables (tools/plot_main.py) hold these outputs.
 
-Margin of the rate check (docs/performance.md, "The compression test's rate check and round-off"):
-at this resolution one run's windowed force moves by 2-7% with the cell's microstate, which
-round-off decides (20 us of a chaotic fluid). Over six microstates of this same cell
-(tools/bench/rate-ensemble.sh) the two rates differ by 3.3% +- 1.0% at 14% strain and this check
-passes for 2 of the 6, this cell's among them. A change of round-off alone (compiler, flags, the
-order of a sum) can therefore fail it without any change of physics; measure with that script
-before reading a failure as one. (The kernel's arithmetic rearranged, another order of roundings
-and nothing else, reads +0.48 +0.05 +5.34 -0.10%, docs/performance.md.) At the paper's resolution one run moves by only 0.13-0.6%, but
-the speeds themselves differ by up to 1.9% (0.5 against 0.25 m/s, at 6% strain) and 3.1% (0.25
-against 0.125 m/s, at 14%) over a few microstates (same document): a 2% criterion is marginal
-there as well.
+Why level 4 and not the coarse cell (docs/performance.md, "The compression test's rate check and
+round-off"): at level 3 one run's windowed force moves by 2-7% with the cell's microstate, and
+over six microstates the two rates differ by 3.3% +- 1.0% at 14% strain: the coarse cell does not
+meet 2% on average, and which code passed was round-off's choice (2 of 6 microstates did; the
+kernel's arithmetic rearranged read +5.3%). At level 4 one run moves by 0.13-0.6%, and over six
+microstates the rates differ by +1.40% +- 0.06% (largest 1.55%), +0.91%, +0.38% and +0.88%
+(largest 1.57%) in the four windows: the criterion holds in every microstate and the scatter
+resolves it. The cell's inflation starts from its fluid displaced by up to 1e-9 um (in.inflate
+-var jitter, seed 1): the generator's lattice is symmetric, and inflated as it is it ends in an
+atypical microstate that round-off picks (the one member of the ensemble at +1.93% in the first
+window; in test_respa the same state's pressure is 2.5% above the jittered ones').
 """
 import numpy as np
 
 import lmptest as T
 
-COARSE = dict(T.COARSE)
 WINDOWS = (0.06, 0.10, 0.14, 0.18)
+HALF = 0.02     # half width of the strain windows
 
 
 def main():
     d = T.workdir("compress")
-    T.inflate_coarse(d, nsteps=20000, every=5000)
+    T.cellgen("cell", "-o", "cell.data", "--level", 4, "--nfluid", 3500, "--inset", 1.6, cwd=d)
+    T.lmp(T.INPUTS + "/in.inflate", cwd=d, log="log.inflate", variables=dict(
+        dir=T.INPUTS, data="cell.data", nsteps=20000, every=1000, out="inflate.dat",
+        restart_out="inflated.restart", jitter=1))
     curves = {}
     for v in (0.5, 0.25):
         out = f"compress-{v}.dat"
         T.lmp(T.INPUTS + "/in.compress", cwd=d, log=f"log.compress-{v}", variables=dict(
-            COARSE, dir=T.INPUTS, restart="inflated.restart", vplate=v, every=100, out=out))
-        a = T.load(f"{d}/{out}")    # step t eps Ftop Fbot Feq P
-        eps, Ftop, Fbot, P = a[:, 2], a[:, 3], a[:, 4], a[:, 6]
+            dir=T.INPUTS, restart="inflated.restart", vplate=v, every=100, out=out))
+        a = T.load(f"{d}/{out}")    # step t eps Ftop Fbot Feq P broken leak V Vf pz
+        t, eps, Ftop, Fbot, P, leak, pz = a[:, 1], a[:, 2], a[:, 3], a[:, 4], a[:, 6], a[:, 8], a[:, 11]
         F = 0.5 * (Ftop + Fbot)
-        win = np.array([F[abs(eps - e) < 0.02].mean() for e in WINDOWS])
-        top = np.array([Ftop[abs(eps - e) < 0.02].mean() for e in WINDOWS])
-        bot = np.array([Fbot[abs(eps - e) < 0.02].mean() for e in WINDOWS])
+        win = np.array([F[abs(eps - e) < HALF].mean() for e in WINDOWS])
         curves[v] = win
         print(f"v = {v} m/s: windowed plate force (uN) " + " ".join(f"{x * 1e-3:8.2f}" for x in win)
               + f"; final strain {eps[-1]:.3f}, final pressure {P[-1]:.1f} kPa")
         T.check(f"v={v}: force rises with strain", np.all(np.diff(win) > 0))
-        imb = np.max(abs(top / bot - 1))
-        T.check(f"v={v}: both plates carry the same load (5%)", imb < 0.05, f"max {imb:.1%}")
+        raw, net = [], []
+        for e in WINDOWS:
+            k = np.flatnonzero(abs(eps - e) < HALF)
+            # over the window: mean of bottom - top, and the momentum's change over its time
+            dpdt = (pz[k[-1]] - pz[k[0]]) / (t[k[-1]] - t[k[0]])
+            diff = (Fbot[k] - Ftop[k]).mean()
+            raw.append(diff / F[k].mean())
+            net.append((diff - dpdt) / F[k].mean())
+        print(f"v = {v} m/s: (bottom - top) / load per window " + " ".join(f"{x:+.2%}" for x in raw)
+              + "; less the cell's d(p_z)/dt " + " ".join(f"{x:+.2%}" for x in net))
+        imb = np.max(np.abs(net))
+        T.check(f"v={v}: both plates carry the same load, the cell's acceleration taken out (5%)",
+                imb < 0.05, f"max {imb:.2%}")
         T.check(f"v={v}: reaches 20% strain (last output within 0.5%) with positive pressure",
                 eps[-1] > 0.195 and P.min() > 0)
+        T.check(f"v={v}: no fluid outside the wall", np.all(leak == 0))
     # the main job's plotting step (tools/plot_main.py) on these outputs: CSV columns as labelled
     import shutil
     import subprocess

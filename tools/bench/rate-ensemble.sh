@@ -7,8 +7,9 @@
 # tests/test_compress.py's (docs/performance.md, "The compression test's rate check").
 #
 # Each of N members inflates the cell (lammps-inputs/in.inflate, 20 us as the test) with its
-# fluid displaced by up to 1e-9 um (-var jitter SEED; member 1 is not displaced, the test's own
-# cell), then compresses that inflated cell (in.compress to STRAIN) once per plate speed of RATES.
+# fluid displaced by up to 1e-9 um (-var jitter SEED; member 1 is not displaced: the generator's
+# symmetric lattice, an atypical microstate; the test inflates its level-4 cell with seed 1), then
+# compresses that inflated cell (in.compress to STRAIN) once per plate speed of RATES.
 # Prints, per speed, the mean of both plates' force over strain windows (4%-wide windows at
 # 6 10 14 18% as the test, and 8%-wide ones at 8 and 16%) for every member, the members' mean and
 # their relative scatter; and per pair of neighbouring speeds, the paired difference (the same
