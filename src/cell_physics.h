@@ -160,11 +160,22 @@ inline double kernel_dwdr(double r, double s)
 }
 
 // (dW/dr) / r from r^2: the factor wr of grad_i W_ij = wr r_ij (Eq. 5, Eq. 7) that the pair loops
-// use. No branch of its own, so a loop over pairs calling it runs in SIMD lanes.
-inline double kernel_wr(double rsq, double s, double norm)
+// use, with 1/s and kernel_wr_norm(s) = kernel_dwdr_norm(s) / s of the type pair computed once.
+// Inside q < 1 the 1/r cancels, so no division is left there; both brackets are evaluated and one
+// is selected, with no branch, so that a loop over pairs calling it runs in SIMD lanes. It equals
+// kernel_dwdr(r, s) / r to a few ulp, not bit for bit (tests/unit: Kernel.PairFactorIsdWdrOverR).
+inline double kernel_wr_norm(double s)
 {
-  const double r = std::sqrt(rsq);
-  return kernel_dwdr(r, s, norm) / r;
+  return kernel_dwdr_norm(s) / s;
+}
+
+inline double kernel_wr(double rsq, double inv_s, double wr_norm)
+{
+  const double q = std::sqrt(rsq) * inv_s;
+  const double u = 2.0 - q;
+  const double inner = wr_norm * (-2.0 + 1.5 * q);
+  const double outer = -wr_norm * 0.5 * u * u / q;
+  return q < 1.0 ? inner : (q < 2.0 ? outer : 0.0);
 }
 
 // Tait equation of state with background turgor P0 (Eq. 6), kappa = rho0 c^2 / 7.
@@ -209,6 +220,14 @@ inline double sph_viscous_fvel(double mi, double mj, double mu_i, double mu_j, d
                                double rho_j, double wr)
 {
   return mi * mj * (mu_i + mu_j) / (rho_i * rho_j) * wr;
+}
+
+// The same with the inverse densities 1/rho_i, 1/rho_j, which a pair loop computes once per
+// particle: no division per pair (equal to sph_viscous_fvel to round-off).
+inline double sph_viscous_fvel_inv(double mi, double mj, double mu_i, double mu_j,
+                                   double inv_rho_i, double inv_rho_j, double wr)
+{
+  return mi * mj * (mu_i + mu_j) * (inv_rho_i * inv_rho_j) * wr;
 }
 
 // One pair's term of the continuity equation (Eq. 7): v_ij . grad_i W_ij, with dv = v_i - v_j and

@@ -46,10 +46,11 @@ using namespace CellPhysics;
 
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
-    wnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1), pairs_build(-1),
+    sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1), pairs_build(-1),
     pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr), maxfirst(0), maxpair(0),
     cand_build(-1), cand_nall(-1), cand_first(nullptr), cand_j(nullptr), maxcand_first(0),
-    maxcand(0), s_uniform(false), s_uniform_value(0.0), wnorm_uniform(0.0)
+    maxcand(0), s_uniform(false), s_uniform_value(0.0), sinv_uniform(0.0),
+    wrnorm_uniform(0.0)
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -74,7 +75,8 @@ PairCellSPH::~PairCellSPH()
     memory->destroy(P0);
     memory->destroy(mu);
     memory->destroy(s);
-    memory->destroy(wnorm);
+    memory->destroy(sinv);
+    memory->destroy(wrnorm);
   }
 }
 
@@ -163,15 +165,16 @@ void PairCellSPH::find_candidates()
       if (!seen) {
         seen = true;
         s_uniform_value = s[it][jt];
-        wnorm_uniform = wnorm[it][jt];
+        sinv_uniform = sinv[it][jt];
+        wrnorm_uniform = wrnorm[it][jt];
       } else if (s[it][jt] != s_uniform_value)
         s_uniform = false;
     }
 }
 
 /* ----------------------------------------------------------------------
-   The kernel factor wr = (dW/dr) / r (kernel_wr) of n pairs of one type pair (smoothing length s,
-   prefactor kernel_dwdr_norm(s)), from r^2 in place. The compiler turns the kernel's two brackets
+   The kernel factor wr = (dW/dr) / r (kernel_wr) of n pairs of one type pair (1 / s and
+   kernel_wr_norm(s)), from r^2 in place. The compiler turns the kernel's two brackets
    into a select and runs the loop in SIMD lanes, as this file is compiled without errno for sqrt
    and without trapping math (CMakeLists.txt). On x86-64 it is compiled twice, for the baseline
    (SSE2, 2 lanes) and for AVX2 (4 lanes), and the loader picks what the CPU has (GCC/Clang
@@ -188,10 +191,10 @@ void PairCellSPH::find_candidates()
 #define CELLMECH_SIMD_CLONES
 #endif
 
-CELLMECH_SIMD_CLONES static void kernel_wr_sweep(double *__restrict w, int n, double s,
-                                                 double norm)
+CELLMECH_SIMD_CLONES static void kernel_wr_sweep(double *__restrict w, int n, double inv_s,
+                                                 double wr_norm)
 {
-  for (int k = 0; k < n; k++) w[k] = kernel_wr(w[k], s, norm);
+  for (int k = 0; k < n; k++) w[k] = kernel_wr(w[k], inv_s, wr_norm);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -229,8 +232,8 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     const double vxi = v[3 * i], vyi = v[3 * i + 1], vzi = v[3 * i + 2];
     const double mi = rmass[i];
     const double *const cutsqi = cutsq[itype];
-    const double *const si = s[itype];
-    const double *const normi = wnorm[itype];
+    const double *const sinvi = sinv[itype];
+    const double *const normi = wrnorm[itype];
     // three sweeps over i's pairs, so that the square roots and divisions of the kernel, which
     // the loop waits on, run side by side in SIMD lanes: the distance test writes the pairs inside
     // the support with their r^2, the kernel sweep turns r^2 into wr in place, the continuity
@@ -248,11 +251,11 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
       npair++;
     }
     if (s_uniform)
-      kernel_wr_sweep(pair_wr + first, npair - first, s_uniform_value, wnorm_uniform);
+      kernel_wr_sweep(pair_wr + first, npair - first, sinv_uniform, wrnorm_uniform);
     else
       for (int k = first; k < npair; k++) {
         const int jtype = type[pair_j[k]];
-        pair_wr[k] = kernel_wr(pair_wr[k], si[jtype], normi[jtype]);
+        pair_wr[k] = kernel_wr(pair_wr[k], sinvi[jtype], normi[jtype]);
       }
     if (!CONTINUITY) continue;
     // i's sum in a register: no neighbour is i itself, and starting from what earlier particles
@@ -300,9 +303,10 @@ void PairCellSPH::compute(int eflag, int vflag)
     const int t = type[i];
     double *const q = quant + NQUANT * i;
     if (fluid[t]) {
-      q[0] = pressure(t, rho[i]) / (rho[i] * rho[i]);
+      const double inv_rho = 1.0 / rho[i];
+      q[0] = pressure(t, rho[i]) * inv_rho * inv_rho;
       q[1] = rmass[i];
-      q[2] = rho[i];
+      q[2] = inv_rho;
       q[3] = mu[t];
       if (i < nlocal && eflag) {
         const double ei = rmass[i] * tait_internal_energy(rho[i], rho0[t], c[t], P0[t]);
@@ -328,7 +332,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
     const double vxi = vf[3 * i], vyi = vf[3 * i + 1], vzi = vf[3 * i + 2];
     const double *const qi = quant + NQUANT * i;
-    const double prho2i = qi[0], mi = qi[1], rhoi = qi[2], mui = qi[3];
+    const double prho2i = qi[0], mi = qi[1], irhoi = qi[2], mui = qi[3];
     // as drho[i] in find_pairs: the same additions in the same order, in registers
     double fxi = ff[3 * i], fyi = ff[3 * i + 1], fzi = ff[3 * i + 2];
     for (int k = pair_first[ii]; k < kend; k++) {
@@ -346,7 +350,7 @@ void PairCellSPH::compute(int eflag, int vflag)
 
       // Eq. 5: pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
       const double fp = sph_pressure_fpair(mi, mj, prho2i, qj[0], wr);
-      const double fv = sph_viscous_fvel(mi, mj, mui, qj[3], rhoi, qj[2], wr);
+      const double fv = sph_viscous_fvel_inv(mi, mj, mui, qj[3], irhoi, qj[2], wr);
       const double fx = fp * delx + fv * dvx;
       const double fy = fp * dely + fv * dvy;
       const double fz = fp * delz + fv * dvz;
@@ -444,7 +448,8 @@ void PairCellSPH::allocate()
   memory->create(setflag, np1, np1, "pair:setflag");
   memory->create(cutsq, np1, np1, "pair:cutsq");
   memory->create(s, np1, np1, "pair:s");
-  memory->create(wnorm, np1, np1, "pair:wnorm");
+  memory->create(sinv, np1, np1, "pair:sinv");
+  memory->create(wrnorm, np1, np1, "pair:wrnorm");
   memory->create(fluid, np1, "pair:fluid");
   memory->create(rho0, np1, "pair:rho0");
   memory->create(c, np1, "pair:c");
@@ -622,7 +627,8 @@ double PairCellSPH::init_one(int i, int j)
     error->all(FLERR, "Pair style cell/sph: types {} and {} are not both fluid types", i, j);
   if (setflag[i][j] == 0) s[i][j] = 0.5 * (s[i][i] + s[j][j]);
   s[j][i] = s[i][j];
-  wnorm[i][j] = wnorm[j][i] = kernel_dwdr_norm(s[i][j]);
+  sinv[i][j] = sinv[j][i] = 1.0 / s[i][j];
+  wrnorm[i][j] = wrnorm[j][i] = kernel_wr_norm(s[i][j]);
   return 2.0 * s[i][j];
 }
 
@@ -682,7 +688,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
     return 0.0;
   }
   const double *rho = atom->dvector[irho];
-  const double wr = kernel_wr(rsq, s[itype][jtype], wnorm[itype][jtype]);
+  const double wr = kernel_wr(rsq, sinv[itype][jtype], wrnorm[itype][jtype]);
   fforce = sph_pressure_fpair(atom->rmass[i], atom->rmass[j],
                               pressure(itype, rho[i]) / (rho[i] * rho[i]),
                               pressure(jtype, rho[j]) / (rho[j] * rho[j]), wr);

@@ -54,10 +54,10 @@ class PairCellSPH : public Pair {
   int *fluid;                    // per type: 1 if a fluid type (pair_coeff I I set)
   double *rho0, *c, *P0, *mu;    // per type
   double **s;                    // per type pair: smoothing length (cutoff 2s)
-  double **wnorm;                // per type pair: kernel_dwdr_norm(s)
+  double **sinv, **wrnorm;       // per type pair: 1 / s and kernel_wr_norm(s)
   int irho, idrho;               // indices of d_rho, d_drho in atom->dvector
   int nmax;
-  // per local and ghost atom, once per step: P / rho^2, m, rho, mu
+  // per local and ghost atom, once per step: P / rho^2, m, 1 / rho, mu
   static constexpr int NQUANT = 4;
   double *quant;
   // the interacting fluid pairs of the neighbour list (within 2s, same cell) as a compact list:
@@ -77,9 +77,9 @@ class PairCellSPH : public Pair {
   int *cand_first, *cand_j;
   int maxcand_first, maxcand;
   // one smoothing length for every pair of fluid types (the usual one fluid type): it and its
-  // kernel_dwdr_norm(s), for the kernel sweep of all of an atom's pairs at once
+  // 1 / s and kernel_wr_norm(s), for the kernel sweep of all of an atom's pairs at once
   bool s_uniform;
-  double s_uniform_value, wnorm_uniform;
+  double s_uniform_value, sinv_uniform, wrnorm_uniform;
 
   void allocate();
   bool pairs_of_continuity();

@@ -184,20 +184,36 @@ TEST(Kernel, DerivativeIsFiniteDifferenceOfKernel)
   }
 }
 
-TEST(Kernel, PairFactorIsdWdrOverRBitForBit)
+TEST(Kernel, PairFactorIsdWdrOverR)
 {
-  // kernel_wr(r^2) is what every pair loop uses for (dW/dr) / r; pair cell/sph's results are
-  // documented as bit-identical to the pair-by-pair form kernel_dwdr(r, s) / r
-  // (docs/performance.md), so any rewrite of it (a cheaper form, a reciprocal) must show up here,
-  // not as a drift of the suite's chaotic runs
+  // kernel_wr(r^2, 1/s, norm/s) is (dW/dr) / r rearranged so that q < 1 needs no division: the
+  // same function to round-off. Its q = sqrt(r^2) (1/s) differs from r / s by at most 2.5 ulp
+  // (three roundings against one), i.e. by 5 eps absolute for q < 2; in the outer bracket
+  // u = 2 - q carries that as a relative error 5 eps / u, doubled in u^2, plus a few roundings of
+  // 0.5 eps each in both forms: |rel. err.| <= 12 eps (1 + 1/u) covers it (u = 1 inside q < 1).
+  const double eps = 2.220446049250313e-16;
   for (double s : {0.5, 1.2, 3.2, 6.4}) {
-    const double norm = kernel_dwdr_norm(s);
+    const double inv_s = 1.0 / s, wn = kernel_wr_norm(s);
+    double worst = 0.0;    // largest error in units of the bound
     for (int k = 1; k <= 4000; k++) {
-      const double r = k * 2.0 * s / 4000.0;
-      EXPECT_EQ(kernel_wr(r * r, s, norm), kernel_dwdr(std::sqrt(r * r), s) / std::sqrt(r * r))
-          << "s = " << s << ", r/s = " << r / s;
+      const double r = std::nextafter(k * 2.0 * s / 4000.0, 0.0);
+      const double ref = kernel_dwdr(r, s) / r;
+      const double got = kernel_wr(r * r, inv_s, wn);
+      const double u = r / s < 1.0 ? 1.0 : 2.0 - r / s;
+      const double bound = 12.0 * eps * (1.0 + 1.0 / u) * std::fabs(ref);
+      EXPECT_LE(std::fabs(got - ref), bound) << "s = " << s << ", r/s = " << r / s;
+      if (bound > 0.0) worst = std::max(worst, std::fabs(got - ref) / bound);
     }
+    std::printf("s %.2f  max |kernel_wr - dW/dr / r| = %.2f of the bound 12 eps (1 + 1/u)\n", s,
+                worst);
+    // zero at and beyond the support, like dW/dr
+    for (double r : {2.0 * s, std::nextafter(2.0 * s, 10.0 * s), 3.0 * s})
+      EXPECT_EQ(kernel_wr(r * r, inv_s, wn), 0.0) << "r/s = " << r / s;
   }
+  // the Morris viscosity with inverse densities is the same law (a few roundings apart)
+  const double fv = sph_viscous_fvel(2.0, 3.0, 1.0e-3, 2.0e-3, 1.1, 0.9, -0.7);
+  const double fvi = sph_viscous_fvel_inv(2.0, 3.0, 1.0e-3, 2.0e-3, 1.0 / 1.1, 1.0 / 0.9, -0.7);
+  EXPECT_LE(std::fabs(fvi - fv), 8.0 * eps * std::fabs(fv));
 }
 
 TEST(Kernel, ExactlyZeroOutsideSupport)
