@@ -224,8 +224,8 @@ inline double sph_viscous_fvel(double mi, double mj, double mu_i, double mu_j, d
 
 // The same with the inverse densities 1/rho_i, 1/rho_j, which a pair loop computes once per
 // particle: no division per pair (equal to sph_viscous_fvel to round-off).
-inline double sph_viscous_fvel_inv(double mi, double mj, double mu_i, double mu_j,
-                                   double inv_rho_i, double inv_rho_j, double wr)
+inline double sph_viscous_fvel_inv(double mi, double mj, double mu_i, double mu_j, double inv_rho_i,
+                                   double inv_rho_j, double wr)
 {
   return mi * mj * (mu_i + mu_j) * (inv_rho_i * inv_rho_j) * wr;
 }

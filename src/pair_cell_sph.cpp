@@ -46,10 +46,10 @@ using namespace CellPhysics;
 
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
-    sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1), pairs_build(-1),
-    pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr), maxfirst(0), maxpair(0),
-    cand_build(-1), cand_nall(-1), cand_first(nullptr), cand_j(nullptr), maxcand_first(0),
-    maxcand(0), s_uniform(false), s_uniform_value(0.0), sinv_uniform(0.0),
+    sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1),
+    pairs_build(-1), pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr),
+    maxfirst(0), maxpair(0), cand_build(-1), cand_nall(-1), cand_first(nullptr), cand_j(nullptr),
+    maxcand_first(0), maxcand(0), s_uniform(false), s_uniform_value(0.0), sinv_uniform(0.0),
     wrnorm_uniform(0.0)
 {
   comm_forward = 2;
