@@ -15,11 +15,14 @@ The coarse stiff cell, inflated, is pressed by the top plate at 0.5 m/s for 12.8
    (the issue's criterion; halving the single-level step moves them by 0.2% and 0.005%, printed).
    One microstate is not enough: the mean pressure of this 461-particle fluid is its density to
    1e-5 (kappa / P = 30), which the fluid's packing against the wall sets, and respa 3's shift of
-   it ranges over 0.3-1.3% between microstates (6 of them with this code; 0.0-1.5% with the
-   kernel's arithmetic rearranged, another order of roundings and nothing else): a single one
-   fails 1% for a quarter of them, which round-off picks. Their mean, +0.69% +- 0.14% (printed with
-   its standard error), is what respa does to this cell, and is what the 1% applies to. It is
-   close to 1%: respa's impulses from the fluid every 3 wall steps do pack it differently. The
+   it ranges over 0.0-1.5% between microstates (6 of them with this code; 0.3-1.3% with the
+   kernel's arithmetic of the previous version, another order of roundings and nothing else): a
+   single one fails 1% for a quarter of them, which round-off picks. Their mean, +0.73% +- 0.22%
+   (printed with its standard error; +0.69% +- 0.14% with the previous arithmetic), is what respa
+   does to this cell, and is what the 1% applies to. It is close to 1%: respa's impulses from the
+   fluid every 3 wall steps do pack it differently. Another change of round-off draws six other
+   microstates, whose mean stays below 1% about nine times in ten; each microstate more costs
+   about 12 s and narrows that. The
    equatorial force and the plate force within 5%: this coarse cell's
    contact-by-contact forces move by about 1% when the single-level step is merely halved
    (printed), and respa's impulses from the fluid every 3 wall steps shift them by 2-3%. The
