@@ -206,26 +206,20 @@ inline double tait_internal_energy(double rho, double rho0, double c, double P0)
 }
 
 // SPH pair force (Eq. 5) on particle i from j, F_ij = fp r_ij + fv v_ij with r_ij = x_i - x_j,
-// v_ij = v_i - v_j and grad_i W_ij = wr r_ij, wr = (dW/dr) / r (kernel_dwdr / r). The pressure
-// part fp is central, with prho2 = P / rho^2 of each particle (computed once per particle):
+// v_ij = v_i - v_j and grad_i W_ij = wr r_ij, wr = (dW/dr) / r (kernel_wr). The pressure part fp
+// is central, with prho2 = P / rho^2 of each particle (computed once per particle):
 inline double sph_pressure_fpair(double mi, double mj, double prho2_i, double prho2_j, double wr)
 {
   return -mi * mj * (prho2_i + prho2_j) * wr;
 }
 
 // and the Morris laminar viscosity of Eq. 5 acts along v_ij: fv = m_i m_j (mu_i + mu_j) /
-// (rho_i rho_j) wr. Both are symmetric in i, j, so F_ji = -F_ij (momentum is conserved); wr <= 0
-// makes fv v_ij . v_ij <= 0 (the viscosity only dissipates).
-inline double sph_viscous_fvel(double mi, double mj, double mu_i, double mu_j, double rho_i,
-                               double rho_j, double wr)
-{
-  return mi * mj * (mu_i + mu_j) / (rho_i * rho_j) * wr;
-}
-
-// The same with the inverse densities 1/rho_i, 1/rho_j, which a pair loop computes once per
-// particle: no division per pair (equal to sph_viscous_fvel to round-off).
-inline double sph_viscous_fvel_inv(double mi, double mj, double mu_i, double mu_j, double inv_rho_i,
-                                   double inv_rho_j, double wr)
+// (rho_i rho_j) wr, here from the inverse densities 1/rho_i, 1/rho_j, which a pair loop computes
+// once per particle (no division per pair; the quotient form to a few roundings, tests/unit).
+// Both parts are symmetric in i, j, so F_ji = -F_ij (momentum is conserved); wr <= 0 makes
+// fv v_ij . v_ij <= 0 (the viscosity only dissipates).
+inline double sph_viscous_fvel(double mi, double mj, double mu_i, double mu_j, double inv_rho_i,
+                               double inv_rho_j, double wr)
 {
   return mi * mj * (mu_i + mu_j) * (inv_rho_i * inv_rho_j) * wr;
 }

@@ -350,7 +350,7 @@ void PairCellSPH::compute(int eflag, int vflag)
 
       // Eq. 5: pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
       const double fp = sph_pressure_fpair(mi, mj, prho2i, qj[0], wr);
-      const double fv = sph_viscous_fvel_inv(mi, mj, mui, qj[3], irhoi, qj[2], wr);
+      const double fv = sph_viscous_fvel(mi, mj, mui, qj[3], irhoi, qj[2], wr);
       const double fx = fp * delx + fv * dvx;
       const double fy = fp * dely + fv * dvy;
       const double fz = fp * delz + fv * dvz;

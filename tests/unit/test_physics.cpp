@@ -210,9 +210,9 @@ TEST(Kernel, PairFactorIsdWdrOverR)
     for (double r : {2.0 * s, std::nextafter(2.0 * s, 10.0 * s), 3.0 * s})
       EXPECT_EQ(kernel_wr(r * r, inv_s, wn), 0.0) << "r/s = " << r / s;
   }
-  // the Morris viscosity with inverse densities is the same law (a few roundings apart)
-  const double fv = sph_viscous_fvel(2.0, 3.0, 1.0e-3, 2.0e-3, 1.1, 0.9, -0.7);
-  const double fvi = sph_viscous_fvel_inv(2.0, 3.0, 1.0e-3, 2.0e-3, 1.0 / 1.1, 1.0 / 0.9, -0.7);
+  // the Morris viscosity from inverse densities is the quotient law of Eq. 5 (a few roundings apart)
+  const double fv = 2.0 * 3.0 * (1.0e-3 + 2.0e-3) / (1.1 * 0.9) * -0.7;
+  const double fvi = sph_viscous_fvel(2.0, 3.0, 1.0e-3, 2.0e-3, 1.0 / 1.1, 1.0 / 0.9, -0.7);
   EXPECT_LE(std::fabs(fvi - fv), 8.0 * eps * std::fabs(fv));
 }
 
@@ -486,11 +486,10 @@ struct SphPair {
       del[d] = x[a][d] - x[b][d];
       dv[d] = v[a][d] - v[b][d];
     }
-    const double r = std::sqrt(dot3(del, del));
-    const double wr = kernel_dwdr(r, s) / r;
+    const double wr = kernel_wr(dot3(del, del), 1.0 / s, kernel_wr_norm(s));
     const double fp =
         sph_pressure_fpair(m[a], m[b], P(a) / (rho[a] * rho[a]), P(b) / (rho[b] * rho[b]), wr);
-    const double fv = sph_viscous_fvel(m[a], m[b], mu[a], mu[b], rho[a], rho[b], wr);
+    const double fv = sph_viscous_fvel(m[a], m[b], mu[a], mu[b], 1.0 / rho[a], 1.0 / rho[b], wr);
     for (int d = 0; d < 3; d++) F[d] = fp * del[d] + fv * dv[d];
   }
 };
@@ -538,10 +537,11 @@ TEST(SPH, PairForceIsEq5AndConservesMomentum)
   for (int d = 0; d < 3; d++) EXPECT_EQ(F[d] + Fji[d], 0.0);
 
   // the pressure part is central (no torque: angular momentum), the viscous part only dissipates
-  const double wr = kernel_dwdr(r, p.s) / r;
+  const double wr = kernel_wr(dot3(del, del), 1.0 / p.s, kernel_wr_norm(p.s));
   const double fp = sph_pressure_fpair(p.m[0], p.m[1], p.P(0) / (p.rho[0] * p.rho[0]),
                                        p.P(1) / (p.rho[1] * p.rho[1]), wr);
-  const double fv = sph_viscous_fvel(p.m[0], p.m[1], p.mu[0], p.mu[1], p.rho[0], p.rho[1], wr);
+  const double fv =
+      sph_viscous_fvel(p.m[0], p.m[1], p.mu[0], p.mu[1], 1.0 / p.rho[0], 1.0 / p.rho[1], wr);
   const double Fp[3] = {fp * del[0], fp * del[1], fp * del[2]};
   const double torque[3] = {del[1] * Fp[2] - del[2] * Fp[1], del[2] * Fp[0] - del[0] * Fp[2],
                             del[0] * Fp[1] - del[1] * Fp[0]};
