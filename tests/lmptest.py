@@ -90,6 +90,22 @@ fix             integrate all nve
 """
 
 
+def cell_from_data(data):
+    """Input lines that start a cell run from a data file of tools/cellgen.py: the per-atom fields
+    the styles keep, the data (with room for the special neighbours that failure and the lamella
+    add) and the groups of wall and fluid."""
+    return f"""
+units           micro
+atom_style      molecular
+boundary        f f f
+atom_modify     map array
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+read_data       {data} fix cell NULL cell extra/special/per/atom 6
+group           wall type 1
+group           fluid type 2
+"""
+
+
 # A periodic box of SPH fluid (type 1) and fixed SPH wall particles (type 2) on a lattice, for
 # the fluid tests without a cell: the lines before the box is made, and those after its atoms are.
 SPH_BOX_HEAD = """

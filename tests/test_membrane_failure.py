@@ -310,16 +310,7 @@ write_dump      all custom cont.dump id x y z f_cell_broken modify sort id forma
     # (body force on the fluid, the other hemisphere of the wall held) opens it there and leaves
     # through the hole, where the same push against a wall that cannot fail keeps it all inside
     T.cellgen("cell", "-o", "fluid.data", "--level", 3, "--nfluid", 440, "--inset", r0, cwd=d)
-    cell = f"""
-units           micro
-atom_style      molecular
-boundary        f f f
-atom_modify     map array
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
-read_data       fluid.data fix cell NULL cell extra/special/per/atom 6
-group           wall type 1
-group           fluid type 2
-variable        dir index {T.INPUTS}
+    cell = T.cell_from_data("fluid.data") + f"""variable        dir index {T.INPUTS}
 include         {T.INPUTS}/cell-model.lmp
 bond_style      zero
 bond_coeff      *

@@ -26,16 +26,7 @@ import lmptest as T
 from cellmech import params
 
 COARSE = dict(T.COARSE, dir=T.INPUTS, data="cell.data")
-HEAD = """
-units           micro
-atom_style      molecular
-boundary        f f f
-atom_modify     map array
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
-read_data       ${data} fix cell NULL cell extra/special/per/atom 6
-group           wall type 1
-group           fluid type 2
-"""
+HEAD = T.cell_from_data("${data}")
 MODEL = "include ${dir}/cell-model.lmp\nfix integrate all nve\n"
 OSMOSIS = "fix osmosis fluid cell/fluid Pi -364.0 Lp 100.0\n"
 

@@ -119,14 +119,6 @@ def main():
     T.coarse_cell(d)
     for wall in ("tether", "membrane"):
         model = f"""
-units           micro
-atom_style      molecular
-boundary        f f f
-atom_modify     map array
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
-read_data       DATA fix cell NULL cell extra/special/per/atom 6
-group           wall type 1
-group           fluid type 2
 variable        dir index {T.INPUTS}
 variable        wall index {wall}
 """ + "".join(f"variable        {k} index {v}\n" for k, v in T.COARSE.items()) + f"""
@@ -135,11 +127,11 @@ fix             integrate all nve
 fix             osmosis fluid cell/fluid Pi 0 Lp 0
 """
         tag = f"cell-{wall}"
-        T.lmp(model.replace("DATA", "cell.data") + "velocity all create 1e8 5512 dist gaussian\n"
+        T.lmp(T.cell_from_data("cell.data") + model + "velocity all create 1e8 5512 dist gaussian\n"
               "run 0\ndisplace_atoms all random 0.2 0.2 0.2 4411 units box\nrun 0\n" +
               dump(f"{tag}.dump") + f"write_data {tag}.data nocoeff\n", cwd=d, log=f"log.{tag}")
-        T.lmp(model.replace("DATA", f"{tag}.data") + "run 0\n" + dump(f"{tag}-fresh.dump"), cwd=d,
-              log=f"log.{tag}-fresh")
+        T.lmp(T.cell_from_data(f"{tag}.data") + model + "run 0\n" + dump(f"{tag}-fresh.dump"),
+              cwd=d, log=f"log.{tag}-fresh")
         compare(f"the coarse cell, {wall} wall: run 0, atoms moved, run 0",
                 forces(f"{d}/{tag}.dump"), forces(f"{d}/{tag}-fresh.dump"))
     T.finish()
