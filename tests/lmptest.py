@@ -46,13 +46,15 @@ def coarse_cell(cwd, out="cell.data", *extra):
     cellgen("cell", "-o", out, "--level", 3, "--nfluid", 440, "--inset", COARSE["r0"], *extra, cwd=cwd)
 
 
-def inflate_coarse(cwd, nsteps, every=1000):
+def inflate_coarse(cwd, nsteps, every=1000, jitter=0):
     """coarse_cell, then in.inflate (Table I, coarse lengths) for nsteps to inflated.restart;
-    its record in inflate.dat, its log in log.inflate."""
+    its record in inflate.dat, its log in log.inflate. jitter > 0 (a seed): the fluid starts
+    displaced by up to 1e-9 um, and the names end in -jSEED (inflated-j1.restart, ...)."""
     coarse_cell(cwd)
-    lmp(INPUTS + "/in.inflate", cwd=cwd, log="log.inflate", variables=dict(
-        COARSE, dir=INPUTS, data="cell.data", nsteps=nsteps, every=every, out="inflate.dat",
-        restart_out="inflated.restart"))
+    tag = f"-j{jitter}" if jitter else ""
+    lmp(INPUTS + "/in.inflate", cwd=cwd, log=f"log.inflate{tag}", variables=dict(
+        COARSE, dir=INPUTS, data="cell.data", nsteps=nsteps, every=every, out=f"inflate{tag}.dat",
+        restart_out=f"inflated{tag}.restart", jitter=jitter))
 
 
 def lmp(input_file, cwd, nprocs=1, variables=None, check=True, log="log.lammps"):

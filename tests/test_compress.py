@@ -42,7 +42,9 @@ HALF = 0.02     # half width of the strain windows
 
 def main():
     d = T.workdir("compress")
-    T.cellgen("cell", "-o", "cell.data", "--level", 4, "--nfluid", 3500, "--inset", 1.6, cwd=d)
+    L4 = T.params.LEVELS[4]     # the paper's resolution: cell-model.lmp's own lengths
+    T.cellgen("cell", "-o", "cell.data", "--level", 4, "--nfluid", L4["nfluid"], "--inset", L4["r0"],
+              cwd=d)
     T.lmp(T.INPUTS + "/in.inflate", cwd=d, log="log.inflate", variables=dict(
         dir=T.INPUTS, data="cell.data", nsteps=20000, every=1000, out="inflate.dat",
         restart_out="inflated.restart", jitter=1))

@@ -93,9 +93,7 @@ def main():
     # fluid displaced by 1e-9 um (in.inflate -var jitter), each compressed both ways
     ens = {"verlet": [verlet], "respa3": [r3]}
     for k in range(1, NSTATES):
-        T.lmp(T.INPUTS + "/in.inflate", cwd=d, log=f"log.inflate-j{k}", variables=dict(
-            COARSE, dir=T.INPUTS, data="cell.data", nsteps=4000, every=1000,
-            out=f"inflate-j{k}.dat", restart_out=f"inflated-j{k}.restart", jitter=k))
+        T.inflate_coarse(d, nsteps=4000, every=1000, jitter=k)
         ens["verlet"].append(compress(d, f"verlet-j{k}", restart=f"inflated-j{k}.restart")[2])
         ens["respa3"].append(compress(d, f"respa3-j{k}", restart=f"inflated-j{k}.restart",
                                       respa=3)[2])
