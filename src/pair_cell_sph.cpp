@@ -49,7 +49,7 @@ PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1),
     pairs_build(-1), pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr),
     maxfirst(0), maxpair(0), cand_build(-1), cand_nall(-1), cand_first(nullptr), cand_j(nullptr),
-    maxcand_first(0), maxcand(0), s_uniform(false), s_uniform_value(0.0), sinv_uniform(0.0),
+    maxcand_first(0), maxcand(0), s_uniform(false), sinv_uniform(0.0),
     wrnorm_uniform(0.0)
 {
   comm_forward = 2;
@@ -164,10 +164,9 @@ void PairCellSPH::find_candidates()
       if (!fluid[it] || !fluid[jt]) continue;
       if (!seen) {
         seen = true;
-        s_uniform_value = s[it][jt];
         sinv_uniform = sinv[it][jt];
         wrnorm_uniform = wrnorm[it][jt];
-      } else if (s[it][jt] != s_uniform_value)
+      } else if (sinv[it][jt] != sinv_uniform)    // 1/s, and so norm/s, follows from s
         s_uniform = false;
     }
 }

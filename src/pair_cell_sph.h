@@ -79,7 +79,7 @@ class PairCellSPH : public Pair {
   // one smoothing length for every pair of fluid types (the usual one fluid type): it and its
   // 1 / s and kernel_wr_norm(s), for the kernel sweep of all of an atom's pairs at once
   bool s_uniform;
-  double s_uniform_value, sinv_uniform, wrnorm_uniform;
+  double sinv_uniform, wrnorm_uniform;
 
   void allocate();
   bool pairs_of_continuity();

@@ -119,14 +119,14 @@ fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
 """
 
 
-def sph_box_fluid(rho0, c, p0, mu, s, dx):
+def sph_box_fluid(rho0, c, p0, mu, s, dx, set_rho=True):
     """Input lines that make the atoms of an SPH_BOX_HEAD box fluid at rest (mass rho0 dx^3,
-    density rho0) with pair cell/sph and fix cell/fluid (no osmosis); walls (type 2) unintegrated."""
+    density rho0, or the densities the atoms have with set_rho False) with pair cell/sph and fix
+    cell/fluid (no osmosis); walls (type 2) unintegrated."""
     return f"""
 set             type 1*2 mol 1
 set             type 1*2 mass {rho0 * dx ** 3}
-set             type 1*2 d_rho {rho0}
-group           fluid type 1
+""" + (f"set             type 1*2 d_rho {rho0}\n" if set_rho else "") + f"""group           fluid type 1
 pair_style      cell/sph
 pair_coeff      1 1 {rho0} {c} {p0} {mu} {s}
 pair_coeff      2 2 {rho0} {c} {p0} {mu} {s}

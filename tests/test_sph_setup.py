@@ -78,8 +78,7 @@ def fresh(d, data, out):
     """forces of a new LAMMPS started from a data file"""
     T.lmp(HEAD + f"""
 read_data       {data} fix cell NULL cell
-""" + T.sph_box_fluid(RHO0, C, P0, MU, S, DX).replace(
-        f"set             type 1*2 d_rho {RHO0}\n", "") + "run 0\n" + dump(out),
+""" + T.sph_box_fluid(RHO0, C, P0, MU, S, DX, set_rho=False) + "run 0\n" + dump(out),
           cwd=d, log=f"log.{out}")
     return forces(f"{d}/{out}")
 
