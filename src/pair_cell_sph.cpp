@@ -49,8 +49,7 @@ PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1),
     pairs_build(-1), pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr),
     maxfirst(0), maxpair(0), cand_build(-1), cand_nall(-1), cand_first(nullptr), cand_j(nullptr),
-    maxcand_first(0), maxcand(0), s_uniform(false), sinv_uniform(0.0),
-    wrnorm_uniform(0.0)
+    maxcand_first(0), maxcand(0), s_uniform(false), sinv_uniform(0.0), wrnorm_uniform(0.0)
 {
   comm_forward = 2;
   comm_reverse = 1;
