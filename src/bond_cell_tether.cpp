@@ -16,16 +16,17 @@
 #include "cell_fields.h"
 
 #include "atom.h"
+#include "cell_checks.h"
 #include "cell_physics.h"
 #include "cell_restart.h"
 #include "comm.h"
-#include "cell_checks.h"
 #include "error.h"
 #include "fix_cell_tether_break.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -72,6 +73,29 @@ void BondCellTether::compute(int eflag, int vflag)
   const int newton_bond = force->newton_bond;
   double ebond = 0.0;
 
+  // Each tether's rest length and tension factor change only with the bond list (a build or a
+  // setup): computed then, they spare every step a square root and a division, which the divider
+  // of the CPU, the loop's bottleneck, would otherwise run for every tether.
+  if (update->setupflag || neighbor->lastcall != rest_build || (int) rest.size() != nbondlist) {
+    rest_build = neighbor->lastcall;
+    rest.resize(nbondlist);
+    scale.resize(nbondlist);
+    for (int n = 0; n < nbondlist; n++) {
+      const int i1 = bondlist[n][0];
+      const int i2 = bondlist[n][1];
+      const int type = bondlist[n][2];
+      if (type <= 0) continue;
+      const double l0 = CellMech::rest_length(atom->darray[iref], i1, i2);
+      if (!(l0 > 0.0))
+        error->one(FLERR,
+                   "Bond style cell/tether: tether {}-{} has zero rest length; are the "
+                   "d2_cellref reference positions set and communicated to ghosts (ghost yes)?",
+                   tag[i1], tag[i2]);
+      rest[n] = l0;
+      scale[n] = tether_tension_scale(G[type], t0[type], l0);
+    }
+  }
+
   for (int n = 0; n < nbondlist; n++) {
     const int i1 = bondlist[n][0];
     const int i2 = bondlist[n][1];
@@ -83,12 +107,7 @@ void BondCellTether::compute(int eflag, int vflag)
     const double delz = x[i1][2] - x[i2][2];
     const double rsq = delx * delx + dely * dely + delz * delz;
     const double r = sqrt(rsq);
-    const double l0 = CellMech::rest_length(atom->darray[iref], i1, i2);
-    if (!(l0 > 0.0))
-      error->one(FLERR,
-                 "Bond style cell/tether: tether {}-{} has zero rest length; are the d2_cellref "
-                 "reference positions set and communicated to ghosts (ghost yes)?",
-                 tag[i1], tag[i2]);
+    const double l0 = rest[n];
     const double lam = r / l0;
     if (!checked && (lam > 5.0 || lam < 0.2))
       error->one(
@@ -108,7 +127,7 @@ void BondCellTether::compute(int eflag, int vflag)
       continue;
     }
 
-    double fbond = -tether_tension(G[type], t0[type], l0, lam) / r;
+    double fbond = -tether_tension_scaled(scale[n], lam) / r;
     if (gamma[type] > 0.0) {
       const double dvx = v[i1][0] - v[i2][0];
       const double dvy = v[i1][1] - v[i2][1];

@@ -45,6 +45,10 @@ class BondCellTether : public Bond {
   int checked;      // reference positions checked for plausibility in this run
   int breakable;    // some bond type has a critical stretch lamf
   std::vector<std::pair<tagint, tagint>> broken;    // tag pairs broken on this rank, this step
+  // per entry of neighbor->bondlist since its last build: rest length, tether_tension_scale;
+  // the timestep of that build
+  bigint rest_build = -1;
+  std::vector<double> rest, scale;
 
   void process_breaks();
   void add_break_fix();

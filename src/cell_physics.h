@@ -23,11 +23,23 @@ constexpr double SQRT3 = 1.7320508075688772;
    thinning l t = l0 t0 / lam (Eq. 18). Positive = tensile.
 ------------------------------------------------------------------------ */
 
-inline double tether_tension(double G, double t0, double l0, double lam)
+// The tension's factor G l0 t0 / sqrt3, fixed for a tether: a driver may compute it once per
+// tether (bond style cell/tether, per neighbour-list build) and pass it to tether_tension_scaled.
+inline double tether_tension_scale(double G, double t0, double l0)
+{
+  return G * l0 * t0 / SQRT3;
+}
+
+inline double tether_tension_scaled(double scale, double lam)
 {
   const double lam2 = lam * lam;
   const double lam5 = lam2 * lam2 * lam;
-  return G * l0 * t0 / SQRT3 * (lam - 1.0 / lam5);
+  return scale * (lam - 1.0 / lam5);
+}
+
+inline double tether_tension(double G, double t0, double l0, double lam)
+{
+  return tether_tension_scaled(tether_tension_scale(G, t0, l0), lam);
 }
 
 // Energy is the exact integral of the tension over l = lam l0, zero at rest, so that
@@ -179,12 +191,23 @@ inline double kernel_wr(double rsq, double inv_s, double wr_norm)
 }
 
 // Tait equation of state with background turgor P0 (Eq. 6), kappa = rho0 c^2 / 7.
-inline double tait_pressure(double rho, double rho0, double c, double P0)
+// A driver computes kappa once per fluid type and calls tait_pressure_kappa once per particle.
+inline double tait_kappa(double rho0, double c)
+{
+  return rho0 * c * c / 7.0;
+}
+
+inline double tait_pressure_kappa(double rho, double rho0, double kappa, double P0)
 {
   const double x = rho / rho0;
   const double x2 = x * x;
   const double x7 = x2 * x2 * x2 * x;
-  return P0 + rho0 * c * c / 7.0 * (x7 - 1.0);
+  return P0 + kappa * (x7 - 1.0);
+}
+
+inline double tait_pressure(double rho, double rho0, double c, double P0)
+{
+  return tait_pressure_kappa(rho, rho0, tait_kappa(rho0, c), P0);
 }
 
 // dP/drho of the Tait law: c^2 (rho/rho0)^6, the squared local sound speed.
@@ -592,8 +615,8 @@ inline double membrane_energy(double G, double t0, const MembraneRest &rest,
 
 // Forces on the two outer nodes of the triangle (Eq. M2): fa = -dW/da, fc = -dW/dc; the central
 // node takes -(fa + fc). Needs J2 > 0 (a triangle with area).
-inline void membrane_forces(double G, double t0, const MembraneRest &rest,
-                            const MembraneStrain &s, double fa[3], double fc[3])
+inline void membrane_forces(double G, double t0, const MembraneRest &rest, const MembraneStrain &s,
+                            double fa[3], double fc[3])
 {
   // C2^-1 / det C2 = adj(C2) / J2^2
   const double inv = 1.0 / (s.J2 * s.J2);
@@ -713,8 +736,9 @@ inline bool hinge_rest(const double B1[3], const double B2[3], const double B3[3
                         B1[0] * B2[1] - B1[1] * B2[0]};
   const double n2[3] = {B2[1] * B3[2] - B2[2] * B3[1], B2[2] * B3[0] - B2[0] * B3[2],
                         B2[0] * B3[1] - B2[1] * B3[0]};
-  const double area = 0.5 * (std::sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]) +
-                             std::sqrt(n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]));
+  const double area = 0.5 *
+      (std::sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]) +
+       std::sqrt(n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]));
   rest.weight = (B2[0] * B2[0] + B2[1] * B2[1] + B2[2] * B2[2]) / area;
   return true;
 }

@@ -408,25 +408,37 @@ void FixCellFluid::cell_geometry()
   double **ref = iref >= 0 ? atom->darray[iref] : nullptr;
 
   int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
+  const int nangle = neighbor->nanglelist;
+  // a triangle's cell (that of its central node, contract: cell_fields.h) and rest area change
+  // only with the angle list and the cell index (a build or a setup): found then, not each step
+  if (update->setupflag || neighbor->lastcall != tri_build || (int) tri_slot.size() != nangle) {
+    tri_build = neighbor->lastcall;
+    tri_slot.assign(nangle, 0);
+    tri_aref.assign(nangle, 0.0);
+    for (int n = 0; n < nangle; n++) {
+      const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
+      tri_slot[n] = cells.slot(molecule[b]);
+      if (!ref) continue;
+      double u[3], w[3];
+      for (int d = 0; d < 3; d++) {
+        u[d] = ref[b][d] - ref[a][d];
+        w[d] = ref[c][d] - ref[a][d];
+      }
+      tri_aref[n] = triangle_area(u, w);
+    }
+  }
+  for (int n = 0; n < nangle; n++) {
     if (anglelist[n][3] <= 0) continue;    // triangle of a broken wall
+    const int m = tri_slot[n];
+    if (m < 1) continue;
     const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
     double u[3], w[3];
     for (int d = 0; d < 3; d++) {
       u[d] = x[b][d] - x[a][d];
       w[d] = x[c][d] - x[a][d];
     }
-    // the cell of the central node (contract: cell_fields.h)
-    const int m = cells.slot(molecule[b]);
-    if (m < 1) continue;
     local[m] += triangle_area(u, w);
-    if (ref) {
-      for (int d = 0; d < 3; d++) {
-        u[d] = ref[b][d] - ref[a][d];
-        w[d] = ref[c][d] - ref[a][d];
-      }
-      local[3 * n1 + m] += triangle_area(u, w);
-    }
+    if (ref) local[3 * n1 + m] += tri_aref[n];
   }
   double *rho = sph->rho_array();
   double *rmass = atom->rmass;

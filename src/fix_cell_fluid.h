@@ -59,6 +59,11 @@ class FixCellFluid : public Fix {
   // started (Eq. W1), and this step's water, osmotic and water potentials, exposed and glued area
   std::vector<double> pi0, lp, water0, water, pinow, psi, exposed, glued;
   std::vector<double> aref, sump, sumstiff, sumrho;    // rest wall area, sums over the fluid
+  // per entry of neighbor->anglelist since the last build: the cell slot of the triangle and its
+  // rest area (cell_geometry); the timestep of the build they were found for
+  bigint tri_build = -1;
+  std::vector<int> tri_slot;
+  std::vector<double> tri_aref;
   std::map<LAMMPS_NS::tagint, double> water0_restart;
   int iref, ialam;    // d2_cellref and d_alam
 

@@ -36,6 +36,8 @@
 #include "respa.h"
 #include "update.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 
@@ -45,11 +47,12 @@ using namespace CellPhysics;
 /* ---------------------------------------------------------------------- */
 
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
-    Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), s(nullptr),
-    sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr), pairs_step(-1),
-    pairs_build(-1), pairs_nall(-1), pair_first(nullptr), pair_j(nullptr), pair_wr(nullptr),
-    maxfirst(0), maxpair(0), cand_build(-1), cand_nall(-1), cand_first(nullptr), cand_j(nullptr),
-    maxcand_first(0), maxcand(0), s_uniform(false), sinv_uniform(0.0), wrnorm_uniform(0.0)
+    Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), kappa(nullptr),
+    s(nullptr), sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr),
+    pairs_step(-1), pairs_build(-1), pairs_nall(-1), pair_first(nullptr), pair_j(nullptr),
+    pair_wr(nullptr), maxfirst(0), maxpair(0), cand_build(-1), cand_nall(-1), cand_first(nullptr),
+    cand_j(nullptr), maxcand_first(0), maxcand(0), s_uniform(false), sinv_uniform(0.0),
+    wrnorm_uniform(0.0)
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -73,30 +76,11 @@ PairCellSPH::~PairCellSPH()
     memory->destroy(c);
     memory->destroy(P0);
     memory->destroy(mu);
+    memory->destroy(kappa);
     memory->destroy(s);
     memory->destroy(sinv);
     memory->destroy(wrnorm);
   }
-}
-
-double PairCellSPH::pressure(int type, double rho) const
-{
-  return tait_pressure(rho, rho0[type], c[type], P0[type]);
-}
-
-double PairCellSPH::dpressure_drho(int type, double rho) const
-{
-  return tait_dpdrho(rho, rho0[type], c[type]);
-}
-
-double *PairCellSPH::rho_array() const
-{
-  return atom->dvector[irho];
-}
-
-double *PairCellSPH::drho_array() const
-{
-  return atom->dvector[idrho];
 }
 
 /* ---------------------------------------------------------------------- */
@@ -150,6 +134,7 @@ void PairCellSPH::find_candidates()
     maxfirst = inum + 1;
     memory->destroy(pair_first);
     memory->create(pair_first, maxfirst, "pair:pair_first");
+    std::fill(pair_first, pair_first + maxfirst, 0);
   }
   cand_build = neighbor->ncalls;
   cand_nall = atom->nlocal + atom->nghost;
@@ -181,9 +166,9 @@ void PairCellSPH::find_candidates()
    (CMakeLists.txt), so every version gives the bits of one pair at a time.
 ------------------------------------------------------------------------- */
 
-#if defined(__x86_64__) && defined(__linux__) && !defined(CELLMECH_NO_SIMD_CLONES) &&             \
-    ((defined(__clang__) && __clang_major__ >= 14) || (!defined(__clang__) && defined(__GNUC__) && \
-                                                       __GNUC__ >= 6))
+#if defined(__x86_64__) && defined(__linux__) && !defined(CELLMECH_NO_SIMD_CLONES) && \
+    ((defined(__clang__) && __clang_major__ >= 14) ||                                 \
+     (!defined(__clang__) && defined(__GNUC__) && __GNUC__ >= 6))
 #define CELLMECH_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define CELLMECH_SIMD_CLONES
@@ -204,9 +189,9 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
   // minimisation, a rerun frame) builds the lists anew and then sets that count back to 0, so a
   // run after a run 0 would see the count it ended with although the atoms were re-sorted or
   // moved in between (displace_atoms, read_dump, the sort of the setup): a setup always searches.
-  if (update->setupflag || neighbor->ncalls != cand_build ||
-      atom->nlocal + atom->nghost != cand_nall)
-    find_candidates();
+  const bool fresh = update->setupflag || neighbor->ncalls != cand_build ||
+      atom->nlocal + atom->nghost != cand_nall;
+  if (fresh) find_candidates();
 
   // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
   const double *const x = atom->x ? atom->x[0] : nullptr;
@@ -219,6 +204,24 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
   const int inum = list->inum;
   const int *const ilist = list->ilist;
 
+  // Which candidates lie inside the support: a branch on it is nearly free where the CPU's
+  // predictor learns the pattern (the regular lists of a lattice at rest) and mispredicted at
+  // every turn where it cannot (a moving fluid's lists, atoms re-sorted: a tenth of the full cell's
+  // step). A test without a branch costs a little in the first case and saves that in the second.
+  // Which one is faster is measured, as FFTW's planner measures its plans: at each setup and
+  // every SEARCH_REPLAN searches, one search untimed, then SEARCH_PLAN - SEARCH_TIMED - 1 without
+  // a branch and SEARCH_TIMED with one (the predictor learns over a few), the shortest of each
+  // kind compared; the faster kind serves until the next plan. Both keep the same pairs in the
+  // same order, so the choice changes no bit, only the time.
+  if (update->setupflag || ++search_count >= SEARCH_REPLAN) {
+    search_count = 0;
+    search_trials = SEARCH_PLAN;
+    search_time[SEARCH_BRANCH] = search_time[SEARCH_BRANCHLESS] = HUGE_VAL;
+  }
+  const bool timed = search_trials > 0 && search_trials < SEARCH_PLAN;
+  const int mode = timed ? (search_trials > SEARCH_TIMED ? SEARCH_BRANCHLESS : SEARCH_BRANCH)
+                         : search_mode;
+  const auto start = std::chrono::steady_clock::now();
   int npair = 0;
   for (int ii = 0; ii < inum; ii++) {
     pair_first[ii] = npair;
@@ -235,18 +238,32 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     // three sweeps over i's pairs, so that the square roots and divisions of the kernel, which
     // the loop waits on, run side by side in SIMD lanes: the distance test writes the pairs inside
     // the support with their r^2, the kernel sweep turns r^2 into wr in place, the continuity
-    // sweep adds the terms of Eq. 7
+    // sweep adds the terms of Eq. 7.
     const int first = npair;
-    for (int k = cand_first[ii]; k < kend; k++) {
-      const int j = cand_j[k];
-      const double delx = xi - x[3 * j];
-      const double dely = yi - x[3 * j + 1];
-      const double delz = zi - x[3 * j + 2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsqi[type[j]]) continue;
-      pair_j[npair] = j;
-      pair_wr[npair] = rsq;
-      npair++;
+    if (mode == SEARCH_BRANCH) {
+      for (int k = cand_first[ii]; k < kend; k++) {
+        const int j = cand_j[k];
+        const double delx = xi - x[3 * j];
+        const double dely = yi - x[3 * j + 1];
+        const double delz = zi - x[3 * j + 2];
+        const double rsq = delx * delx + dely * dely + delz * delz;
+        if (rsq >= cutsqi[type[j]]) continue;
+        pair_j[npair] = j;
+        pair_wr[npair] = rsq;
+        npair++;
+      }
+    } else {
+      // every candidate is stored, and the count moves past it only if it is inside
+      for (int k = cand_first[ii]; k < kend; k++) {
+        const int j = cand_j[k];
+        const double delx = xi - x[3 * j];
+        const double dely = yi - x[3 * j + 1];
+        const double delz = zi - x[3 * j + 2];
+        const double rsq = delx * delx + dely * dely + delz * delz;
+        pair_j[npair] = j;
+        pair_wr[npair] = rsq;
+        npair += (rsq < cutsqi[type[j]]);
+      }
     }
     if (s_uniform)
       kernel_wr_sweep(pair_wr + first, npair - first, sinv_uniform, wrnorm_uniform);
@@ -270,6 +287,15 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     drho[i] = drhoi;
   }
   pair_first[inum] = npair;
+  if (search_trials > 0) {
+    if (timed) {
+      const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+      search_time[mode] = MIN(search_time[mode], took.count());
+    }
+    if (--search_trials == 0)
+      search_mode = search_time[SEARCH_BRANCHLESS] < search_time[SEARCH_BRANCH] ? SEARCH_BRANCHLESS
+                                                                                : SEARCH_BRANCH;
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -453,9 +479,10 @@ void PairCellSPH::allocate()
   memory->create(c, np1, "pair:c");
   memory->create(P0, np1, "pair:P0");
   memory->create(mu, np1, "pair:mu");
+  memory->create(kappa, np1, "pair:kappa");
   for (int i = 1; i < np1; i++) {
     fluid[i] = 0;
-    rho0[i] = c[i] = P0[i] = mu[i] = 0.0;
+    rho0[i] = c[i] = P0[i] = mu[i] = kappa[i] = 0.0;
     for (int j = i; j < np1; j++) setflag[i][j] = 0;
   }
 }
@@ -514,6 +541,7 @@ void PairCellSPH::coeff(int narg, char **arg)
       fluid[i] = 1;
       rho0[i] = rho0_one;
       c[i] = c_one;
+      kappa[i] = tait_kappa(rho0_one, c_one);
       P0[i] = P0_one;
       mu[i] = mu_one;
       s[i][i] = s_one;
@@ -664,6 +692,7 @@ void PairCellSPH::read_restart(FILE *fp)
     MPI_Bcast(&c[i], 1, MPI_DOUBLE, 0, world);
     MPI_Bcast(&P0[i], 1, MPI_DOUBLE, 0, world);
     MPI_Bcast(&mu[i], 1, MPI_DOUBLE, 0, world);
+    kappa[i] = tait_kappa(rho0[i], c[i]);
     for (int j = i; j <= atom->ntypes; j++) {
       if (me == 0) {
         utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);

@@ -14,6 +14,8 @@ PairStyle(cell/sph,PairCellSPH);
 #ifndef LMP_PAIR_CELL_SPH_H
 #define LMP_PAIR_CELL_SPH_H
 
+#include "atom.h"
+#include "cell_physics.h"
 #include "pair.h"
 
 namespace LAMMPS_NS {
@@ -43,16 +45,24 @@ class PairCellSPH : public Pair {
 
   // equation of state of a fluid type; used by fix cell/fluid and compute cell/props too
   bool is_fluid(int type) const { return fluid[type] != 0; }
-  double pressure(int type, double rho) const;
-  double dpressure_drho(int type, double rho) const;
-  double *rho_array() const;     // per-atom density d_rho
-  double *drho_array() const;    // per-atom continuity rate d_drho
+  // (inline: the fix calls them once per fluid particle and step)
+  double pressure(int type, double rho) const
+  {
+    return CellPhysics::tait_pressure_kappa(rho, rho0[type], kappa[type], P0[type]);
+  }
+  double dpressure_drho(int type, double rho) const
+  {
+    return CellPhysics::tait_dpdrho(rho, rho0[type], c[type]);
+  }
+  double *rho_array() const { return atom->dvector[irho]; }      // per-atom density d_rho
+  double *drho_array() const { return atom->dvector[idrho]; }    // per-atom continuity rate d_drho
 
  protected:
   void check_fluid_atoms();
   void check_respa_level();
   int *fluid;                    // per type: 1 if a fluid type (pair_coeff I I set)
   double *rho0, *c, *P0, *mu;    // per type
+  double *kappa;                 // per type: tait_kappa(rho0, c), set by init_style
   double **s;                    // per type pair: smoothing length (cutoff 2s)
   double **sinv, **wrnorm;       // per type pair: 1 / s and kernel_wr_norm(s)
   int irho, idrho;               // indices of d_rho, d_drho in atom->dvector
@@ -80,6 +90,13 @@ class PairCellSPH : public Pair {
   // 1 / s and kernel_wr_norm(s), for the kernel sweep of all of an atom's pairs at once
   bool s_uniform;
   double sinv_uniform, wrnorm_uniform;
+  // the distance test of find_pairs, with a branch or without (its comment): the kind in use,
+  // the searches since it was chosen, the searches of the plan still to make, and the shortest
+  // time of each kind in the plan (s)
+  enum { SEARCH_BRANCH = 0, SEARCH_BRANCHLESS = 1 };
+  static constexpr int SEARCH_TIMED = 6, SEARCH_PLAN = 10, SEARCH_REPLAN = 1000;
+  int search_mode = SEARCH_BRANCHLESS, search_count = 0, search_trials = 0;
+  double search_time[2] = {0.0, 0.0};
 
   void allocate();
   bool pairs_of_continuity();
