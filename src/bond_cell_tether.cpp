@@ -19,6 +19,7 @@
 #include "cell_checks.h"
 #include "cell_physics.h"
 #include "cell_restart.h"
+#include "cell_simd.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_cell_tether_break.h"
@@ -57,6 +58,30 @@ BondCellTether::~BondCellTether()
 
 /* ---------------------------------------------------------------------- */
 
+/* ----------------------------------------------------------------------
+   Stretch lam = l / l0 and force factor fbond (the force on atom 1 is fbond (x1 - x2)) of n
+   tethers from their squared lengths, r . v, rest lengths, tension factors (Eq. 19) and
+   damping coefficients: the tension of tether_tension_scaled and damping_fpair where the
+   coefficient is > 0. Compiled for the baseline and for AVX2 (cell_simd.h), with the bits of one
+   tether at a time.
+------------------------------------------------------------------------- */
+
+CELLMECH_SIMD_CLONES static void
+tether_sweep(int n, const double *__restrict rsq, const double *__restrict rdv,
+             const double *__restrict rest, const double *__restrict scale,
+             const double *__restrict damp, double *__restrict lam, double *__restrict fbond)
+{
+  for (int k = 0; k < n; k++) {
+    const double r = std::sqrt(rsq[k]);
+    const double l = r / rest[k];
+    const double fb = -tether_tension_scaled(scale[k], l) / r;
+    lam[k] = l;
+    fbond[k] = damp[k] > 0.0 ? fb + damping_fpair(damp[k], rdv[k], rsq[k]) : fb;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
 void BondCellTether::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
@@ -73,13 +98,15 @@ void BondCellTether::compute(int eflag, int vflag)
   const int newton_bond = force->newton_bond;
   double ebond = 0.0;
 
-  // Each tether's rest length and tension factor change only with the bond list (a build or a
-  // setup): computed then, they spare every step a square root and a division, which the divider
-  // of the CPU, the loop's bottleneck, would otherwise run for every tether.
+  // Each tether's rest length, tension factor and damping coefficient change only with the bond
+  // list (a build or a setup): computed then, they spare every step a square root and a
+  // division, which the divider of the CPU, the loop's bottleneck, would otherwise run for every
+  // tether.
   if (update->setupflag || neighbor->lastcall != rest_build || (int) rest.size() != nbondlist) {
     rest_build = neighbor->lastcall;
-    rest.resize(nbondlist);
-    scale.resize(nbondlist);
+    rest.assign(nbondlist, 1.0);
+    scale.assign(nbondlist, 0.0);
+    damp.assign(nbondlist, 0.0);
     for (int n = 0; n < nbondlist; n++) {
       const int i1 = bondlist[n][0];
       const int i2 = bondlist[n][1];
@@ -93,33 +120,45 @@ void BondCellTether::compute(int eflag, int vflag)
                    tag[i1], tag[i2]);
       rest[n] = l0;
       scale[n] = tether_tension_scale(G[type], t0[type], l0);
+      damp[n] = gamma[type];
     }
   }
+
+  // Three passes: the separations (gathers), the stretch and force factor of every tether
+  // (tether_sweep, whose square roots and divisions run in SIMD lanes), then failure and the
+  // forces in the bond list's order, so that every force adds up as before, bit for bit.
+  if ((int) sweep.size() < SWEEP_FIELDS * nbondlist) sweep.resize(SWEEP_FIELDS * nbondlist);
+  double *const dx = sweep.data(), *const dy = dx + nbondlist, *const dz = dy + nbondlist;
+  double *const rsq = dz + nbondlist, *const rdv = rsq + nbondlist;
+  double *const lam = rdv + nbondlist, *const fbond = lam + nbondlist;
+  for (int n = 0; n < nbondlist; n++) {
+    const int i1 = bondlist[n][0];
+    const int i2 = bondlist[n][1];
+    dx[n] = x[i1][0] - x[i2][0];
+    dy[n] = x[i1][1] - x[i2][1];
+    dz[n] = x[i1][2] - x[i2][2];
+    rsq[n] = dx[n] * dx[n] + dy[n] * dy[n] + dz[n] * dz[n];
+    rdv[n] = dx[n] * (v[i1][0] - v[i2][0]) + dy[n] * (v[i1][1] - v[i2][1]) +
+        dz[n] * (v[i1][2] - v[i2][2]);
+  }
+  tether_sweep(nbondlist, rsq, rdv, rest.data(), scale.data(), damp.data(), lam, fbond);
 
   for (int n = 0; n < nbondlist; n++) {
     const int i1 = bondlist[n][0];
     const int i2 = bondlist[n][1];
     const int type = bondlist[n][2];
     if (type <= 0) continue;    // broken
-
-    const double delx = x[i1][0] - x[i2][0];
-    const double dely = x[i1][1] - x[i2][1];
-    const double delz = x[i1][2] - x[i2][2];
-    const double rsq = delx * delx + dely * dely + delz * delz;
-    const double r = sqrt(rsq);
-    const double l0 = rest[n];
-    const double lam = r / l0;
-    if (!checked && (lam > 5.0 || lam < 0.2))
+    if (!checked && (lam[n] > 5.0 || lam[n] < 0.2))
       error->one(
           FLERR,
           "Bond style cell/tether: tether {}-{} is stretched {:.4g} times its rest length at "
           "the start of a run; the reference positions d2_cellref are wrong for it (is the "
           "fix property/atom defined with 'ghost yes'?)",
-          tag[i1], tag[i2], lam);
+          tag[i1], tag[i2], lam[n]);
 
     // Failure is tension only: a compressed tether never breaks. The bond leaves the bond arrays
     // of the atom(s) storing it now; the rest of the topology follows in process_breaks().
-    if (lamf[type] > 0.0 && lam > lamf[type]) {
+    if (lamf[type] > 0.0 && lam[n] > lamf[type]) {
       bondlist[n][2] = 0;
       FixCellTetherBreak::remove_bond(atom, i1, tag[i2]);
       if (!newton_bond && i2 < nlocal) FixCellTetherBreak::remove_bond(atom, i2, tag[i1]);
@@ -127,26 +166,19 @@ void BondCellTether::compute(int eflag, int vflag)
       continue;
     }
 
-    double fbond = -tether_tension_scaled(scale[n], lam) / r;
-    if (gamma[type] > 0.0) {
-      const double dvx = v[i1][0] - v[i2][0];
-      const double dvy = v[i1][1] - v[i2][1];
-      const double dvz = v[i1][2] - v[i2][2];
-      fbond += damping_fpair(gamma[type], delx * dvx + dely * dvy + delz * dvz, rsq);
-    }
-    if (eflag) ebond = tether_energy(G[type], t0[type], l0, lam);
-
+    const double fb = fbond[n];
+    if (eflag) ebond = tether_energy(G[type], t0[type], rest[n], lam[n]);
     if (newton_bond || i1 < nlocal) {
-      f[i1][0] += delx * fbond;
-      f[i1][1] += dely * fbond;
-      f[i1][2] += delz * fbond;
+      f[i1][0] += dx[n] * fb;
+      f[i1][1] += dy[n] * fb;
+      f[i1][2] += dz[n] * fb;
     }
     if (newton_bond || i2 < nlocal) {
-      f[i2][0] -= delx * fbond;
-      f[i2][1] -= dely * fbond;
-      f[i2][2] -= delz * fbond;
+      f[i2][0] -= dx[n] * fb;
+      f[i2][1] -= dy[n] * fb;
+      f[i2][2] -= dz[n] * fb;
     }
-    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fb, dx[n], dy[n], dz[n]);
   }
   checked = 1;
   if (breakable) process_breaks();

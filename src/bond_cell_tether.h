@@ -45,10 +45,13 @@ class BondCellTether : public Bond {
   int checked;      // reference positions checked for plausibility in this run
   int breakable;    // some bond type has a critical stretch lamf
   std::vector<std::pair<tagint, tagint>> broken;    // tag pairs broken on this rank, this step
-  // per entry of neighbor->bondlist since its last build: rest length, tether_tension_scale;
-  // the timestep of that build
+  // per entry of neighbor->bondlist since its last build: rest length, tether_tension_scale,
+  // damping coefficient; the timestep of that build
   bigint rest_build = -1;
-  std::vector<double> rest, scale;
+  std::vector<double> rest, scale, damp;
+  // per entry, this step: separation (3), r^2, r . v, stretch, force factor (compute's passes)
+  static constexpr int SWEEP_FIELDS = 7;
+  std::vector<double> sweep;
 
   void process_breaks();
   void add_break_fix();

@@ -22,6 +22,7 @@
 #include "dihedral_cell_bending.h"
 #include "fix_cell_fluid.h"
 #include "fix_cell_lamella_break.h"
+#include "fix_cell_plates.h"
 #include "fix_cell_tether_break.h"
 #include "fix_cell_vtk.h"
 #include "pair_cell_lj84.h"
@@ -90,6 +91,9 @@ extern "C" void lammpsplugin_init(void *ptr, void *handle, void *regfunc)
        &create<Fix, FixCellTetherBreak>},
       {"fix", "CELL_LAMELLA_BREAK", "cellmech bookkeeping of debonded lamella bonds (internal)",
        nullptr, &create<Fix, FixCellLamellaBreak>},
+      {"fix", "cell/plates",
+       "cellmech plates (fix wall/harmonic whose force under respa is the inner steps' mean)",
+       nullptr, &create<Fix, FixCellPlates>},
       {"fix", "cell/vtk", "cellmech cell walls as VTK triangulated surfaces for ParaView", nullptr,
        &create<Fix, FixCellVTK>},
       {"compute", "cell/props",

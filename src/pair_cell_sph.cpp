@@ -23,6 +23,7 @@
 #include "cell_checks.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
+#include "cell_simd.h"
 
 #include "atom.h"
 #include "cell_physics.h"
@@ -158,21 +159,9 @@ void PairCellSPH::find_candidates()
 /* ----------------------------------------------------------------------
    The kernel factor wr = (dW/dr) / r (kernel_wr) of n pairs of one type pair (1 / s and
    kernel_wr_norm(s)), from r^2 in place. The compiler turns the kernel's two brackets
-   into a select and runs the loop in SIMD lanes, as this file is compiled without errno for sqrt
-   and without trapping math (CMakeLists.txt). On x86-64 it is compiled twice, for the baseline
-   (SSE2, 2 lanes) and for AVX2 (4 lanes), and the loader picks what the CPU has (GCC/Clang
-   function multi-versioning): lmp itself is usually built for the baseline. Square roots and
-   divisions are correctly rounded in every lane, and nothing is contracted into FMA
-   (CMakeLists.txt), so every version gives the bits of one pair at a time.
+   into a select and runs the loop in SIMD lanes, for the baseline and for AVX2 (cell_simd.h),
+   with the bits of one pair at a time.
 ------------------------------------------------------------------------- */
-
-#if defined(__x86_64__) && defined(__linux__) && !defined(CELLMECH_NO_SIMD_CLONES) && \
-    ((defined(__clang__) && __clang_major__ >= 14) ||                                 \
-     (!defined(__clang__) && defined(__GNUC__) && __GNUC__ >= 6))
-#define CELLMECH_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define CELLMECH_SIMD_CLONES
-#endif
 
 CELLMECH_SIMD_CLONES static void kernel_wr_sweep(double *__restrict w, int n, double inv_s,
                                                  double wr_norm)

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Issue 2, check 5: plates on an empty wall (lammps-inputs/in.plates, fix wall/harmonic).
+"""Issue 2, check 5: plates on an empty wall (lammps-inputs/in.plates, fix cell/plates).
 
 A wall with no fluid is approached by the top plate at 1 m/s while the bottom plate stays.
 Checked every step:

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 12, target 3: multiple time stepping (run_style respa) in the compression
-(lammps-inputs/in.compress -var respa N: the wall's tethers, triangles and hinges on the inner
-level with step dt, the fluid, every contact and the plates on the outer level with step N dt).
+(lammps-inputs/in.compress -var respa N: the wall's tethers, triangles and hinges and the plates
+(fix cell/plates, its force the mean over the inner steps) on the inner level with step dt, the
+fluid and every contact on the outer level with step N dt).
 
 The coarse stiff cell, inflated, is pressed by the top plate at 0.5 m/s for 12.8 us to 10% strain
 (lammps-inputs/in.compress). Asserted:
@@ -17,17 +18,17 @@ The coarse stiff cell, inflated, is pressed by the top plate at 0.5 m/s for 12.8
    1e-5 (kappa / P = 30), which the fluid's packing against the wall sets, and respa 3's shift of
    it ranges over 0.0-1.5% between microstates (6 of them with this code; 0.3-1.3% with the
    kernel's arithmetic of the previous version, another order of roundings and nothing else): a
-   single one fails 1% for a quarter of them, which round-off picks. Their mean, +0.73% +- 0.22%
-   (printed with its standard error; +0.69% +- 0.14% with the previous arithmetic), is what respa
-   does to this cell, and is what the 1% applies to. It is close to 1%: respa's impulses from the
-   fluid every 3 wall steps do pack it differently. Another change of round-off draws six other
-   microstates, whose mean stays below 1% about nine times in ten; each microstate more costs
-   about 12 s and narrows that. The
+   single one failed 1% for a quarter of them, which round-off picks. Their mean is what respa
+   does to this cell, and is what the 1% applies to: +0.73% +- 0.22% (printed with its standard
+   error) with the plates on the outer level, +0.40% +- 0.17% since they act on the inner one
+   (fix cell/plates). Respa's impulses from the fluid every 3 wall steps do pack it differently.
+   Each microstate more costs about 12 s. The
    equatorial force and the plate force within 5%: this coarse cell's
    contact-by-contact forces move by about 1% when the single-level step is merely halved
-   (printed), and respa's impulses from the fluid every 3 wall steps shift them by 2-3%. The
-   failure this bound is for is larger: the plates on the inner level, their force sampled once
-   per outer step, read 10% low in this run (22-28% at level 4, docs/performance.md);
+   (printed), and respa's impulses from the fluid every 3 wall steps shift them by 1-3% (plate
+   force -1.2%, equatorial force +2.3% on average). The failure this bound is for is larger: fix
+   wall/harmonic on the inner level, its force sampled at the last inner step, read 10% low in
+   this run (22-28% at level 4, docs/performance.md);
  * the same with 'hybrid 2 2 2' in place of 'pair 2', and with respa from the run 0 on (the
    fix's setup under respa), to round-off;
  * 2 ranks give the 1-rank run to 1e-4 under respa 3 as under Verlet (ghost velocities);

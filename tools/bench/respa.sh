@@ -2,21 +2,22 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Benchmark (d), multiple time stepping (issue 12, target 3): the paper-resolution compression
 # (level 4, lammps-inputs/in.inflate then in.compress to 20% strain at 0.5 m/s) single-level
-# (Verlet, dt 0.001 us) against run_style respa with the wall on the inner level (dt 0.001) and
-# the fluid, contacts and plates on the outer level (in.compress -var respa N: outer step N dt).
+# (Verlet, dt 0.001 us) against run_style respa with the wall and the plates on the inner level
+# (dt 0.001; fix cell/plates reports the plates' mean force over the inner steps) and the fluid
+# and contacts on the outer level (in.compress -var respa N: outer step N dt).
 # Prints, per scheme, LAMMPS's loop time, its "% CPU use", the CPU time of the loop (loop x CPU
 # use), both against single-level, and the windowed plate-force curve (analysis.windowed at
 # strains 0.05 0.10 0.15 0.20, half width cases.window_half(4)) against single-level's.
 # Called by tools/benchmark.sh (RESPA=0 there skips it); alone:
 #   LMP=... LAMMPS_PLUGIN_PATH=... bash tools/bench/respa.sh WORKDIR [REPEAT]
 # WORKDIR gets the cell and the runs; REPEAT full compressions per scheme (default 1), the schemes
-# interleaved, fastest loop kept. Environment: RESPAS (default "1 2 3"; 1 is single-level, the
+# interleaved, fastest loop kept. Environment: RESPAS (default "1 3 4 5"; 1 is single-level, the
 # reference), NP (MPI ranks, default 1), PYTHON.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 work=${1:?usage: respa.sh WORKDIR [REPEAT]}
 REPEAT=${2:-1}
-RESPAS=${RESPAS:-1 2 3}
+RESPAS=${RESPAS:-1 3 4 5}
 NP=${NP:-1}
 PYTHON=${PYTHON:-/usr/bin/python3}
 source "$here/tools/common.sh"
