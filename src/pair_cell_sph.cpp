@@ -41,6 +41,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
@@ -207,9 +208,11 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     search_trials = SEARCH_PLAN;
     search_time[SEARCH_BRANCH] = search_time[SEARCH_BRANCHLESS] = HUGE_VAL;
   }
+  if (search_choice != SEARCH_AUTO) search_trials = 0;
   const bool timed = search_trials > 0 && search_trials < SEARCH_PLAN;
-  const int mode = timed ? (search_trials > SEARCH_TIMED ? SEARCH_BRANCHLESS : SEARCH_BRANCH)
-                         : search_mode;
+  const int mode = search_choice != SEARCH_AUTO
+      ? search_choice
+      : (timed ? (search_trials > SEARCH_TIMED ? SEARCH_BRANCHLESS : SEARCH_BRANCH) : search_mode);
   const auto start = std::chrono::steady_clock::now();
   int npair = 0;
   for (int ii = 0; ii < inum; ii++) {
@@ -476,10 +479,34 @@ void PairCellSPH::allocate()
   }
 }
 
-void PairCellSPH::settings(int narg, char ** /*arg*/)
+/* ----------------------------------------------------------------------
+   pair_style cell/sph [search auto|branch|branchless]: the kind of the distance test of
+   find_pairs (auto, the default: the faster one, measured as the run goes). Every kind gives the
+   same bits, so the choice is for tests and timing.
+------------------------------------------------------------------------- */
+
+void PairCellSPH::settings(int narg, char **arg)
 {
-  if (narg != 0)
-    error->all(FLERR, "Illegal pair_style cell/sph command: expected no arguments, got {}", narg);
+  if (narg != 0 && narg != 2)
+    error->all(FLERR,
+               "Illegal pair_style cell/sph command: expected no arguments or 'search KIND', got "
+               "{} arguments",
+               narg);
+  search_choice = SEARCH_AUTO;
+  if (narg == 0) return;
+  const std::string key = arg[0], kind = arg[1];
+  if (key != "search")
+    error->all(FLERR, "Illegal pair_style cell/sph command: expected keyword 'search', got '{}'",
+               key);
+  if (kind == "auto")
+    search_choice = SEARCH_AUTO;
+  else if (kind == "branch")
+    search_choice = SEARCH_BRANCH;
+  else if (kind == "branchless")
+    search_choice = SEARCH_BRANCHLESS;
+  else
+    error->all(FLERR, "pair_style cell/sph search: expected auto, branch or branchless, got '{}'",
+               kind);
 }
 
 /* ----------------------------------------------------------------------

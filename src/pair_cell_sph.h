@@ -93,7 +93,8 @@ class PairCellSPH : public Pair {
   // the distance test of find_pairs, with a branch or without (its comment): the kind in use,
   // the searches since it was chosen, the searches of the plan still to make, and the shortest
   // time of each kind in the plan (s)
-  enum { SEARCH_BRANCH = 0, SEARCH_BRANCHLESS = 1 };
+  enum { SEARCH_BRANCH = 0, SEARCH_BRANCHLESS = 1, SEARCH_AUTO = 2 };
+  int search_choice = SEARCH_AUTO;    // pair_style search: auto (planned) or one kind
   static constexpr int SEARCH_TIMED = 6, SEARCH_PLAN = 10, SEARCH_REPLAN = 1000;
   int search_mode = SEARCH_BRANCHLESS, search_count = 0, search_trials = 0;
   double search_time[2] = {0.0, 0.0};

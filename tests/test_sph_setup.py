@@ -31,6 +31,10 @@ NaN forces in 4).
     cell/sph, fix cell/fluid), with the tether wall and with the membrane wall: run 0, every atom
     displaced by up to 0.2 um, run 0. The fresh start reads the data file with the same
     force field (cell-model.lmp); none of the styles may keep anything of the atoms' old places.
+ 5. the distance test of the pair search, with a branch or without (pair_style cell/sph search;
+    by default the faster one, timed as the run goes, so a run may take either): the coarse cell
+    inflating (in.inflate's osmosis) over 300 steps with re-neighbouring, positions, velocities and forces of each kind
+    the same to the last bit; an unknown kind stops with a message.
 """
 import numpy as np
 
@@ -133,6 +137,38 @@ fix             osmosis fluid cell/fluid Pi 0 Lp 0
               cwd=d, log=f"log.{tag}-fresh")
         compare(f"the coarse cell, {wall} wall: run 0, atoms moved, run 0",
                 forces(f"{d}/{tag}.dump"), forces(f"{d}/{tag}-fresh.dump"))
+
+    # the two kinds of distance test: the same pairs in the same order
+    src = open(T.INPUTS + "/cell-model.lmp").read()
+    key = "pair_style      hybrid/overlay cell/sph "
+    assert src.count(key) == 1, "cell-model.lmp no longer sets cell/sph first in its hybrid/overlay"
+    runs = {}
+    for kind in ("auto", "branch", "branchless", "fast"):
+        with open(f"{d}/cell-model-{kind}.lmp", "w") as f:
+            f.write(src.replace(key, f"{key}search {kind} "))
+        model = f"variable        dir index {T.INPUTS}\n" + "".join(
+            f"variable        {k} index {v}\n" for k, v in T.COARSE.items()) + f"""
+include         cell-model-{kind}.lmp
+fix             integrate all nve
+fix             osmosis fluid cell/fluid Pi -364 Lp 100
+timestep        0.001
+run             300
+write_dump      all custom search-{kind}.dump id x y z vx vy vz fx fy fz modify sort id &
+                format float %.17g
+"""
+        rc, log = T.lmp(T.cell_from_data("cell.data") + model, cwd=d, log=f"log.search-{kind}",
+                        check=kind != "fast")
+        if kind == "fast":
+            T.check("pair_style cell/sph search fast stops with its message", rc != 0 and
+                    "pair_style cell/sph search: expected auto, branch or branchless, got 'fast'"
+                    in log)
+            continue
+        builds = int(log.split("Neighbor list builds =")[1].split()[0])
+        T.check(f"search {kind}: the 300 steps re-neighboured", builds > 0, f"{builds} builds")
+        runs[kind] = frames(f"{d}/search-{kind}.dump")[0]
+    for kind in ("branch", "branchless"):
+        T.check(f"pair_style cell/sph search {kind} = search auto, every bit (x, v, f after 300 "
+                "steps)", np.array_equal(runs[kind], runs["auto"]))
     T.finish()
 
 
