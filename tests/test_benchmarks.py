@@ -57,7 +57,7 @@ def tissue():
 
 
 def cell():
-    rc, out = script("benchmark.sh", "-r", 1, "-n", 20, env=dict(RESPA="0", WALLS="tether"))
+    rc, out = script("benchmark.sh", "-r", 1, "-n", 20, env=dict(RESPA="0", TISSUE="0", WALLS="tether"))
     print(out)
     T.check("benchmark.sh runs", rc == 0)
     for case in (r"\(b\) stock sph/taitwater/morris", r"\(c\) cell/sph \+ cell/fluid", r"\(a\) full cell, tether wall"):

@@ -10,7 +10,13 @@
 #                    tools/bench/in.cell-sph;
 #   (d) respa        time to solution of the paper-resolution compression to 20% strain,
 #                    single-level against run_style respa (tools/bench/respa.sh, a few minutes;
-#                    RESPA=0 skips it, RESPA_REPEAT runs per scheme, default 1).
+#                    RESPA=0 skips it, RESPA_REPEAT runs per scheme, default 1);
+#   (e) tissue       strong scaling of the 8- and 27-cell coarse tissue blocks from 1 to 2 ranks, with
+#                    LAMMPS's timing per rank and the projection to a 1000-cell tissue on 64 and
+#                    256 ranks (tools/benchmark-tissue.sh -s "2 3" -p "1 2", a minute; TISSUE=0 skips
+#                    it; the full study with more blocks and load balancing: that script alone).
+# Threads (issue 12, target 5): measured with a prototype and not kept (docs/performance.md), so
+# there is no OpenMP case.
 # (b) and (c) read exactly the fluid of the generated cell.data (lattice spacing 3.01 um, clipped
 # inside the wall) in its fixed box, with rho0 1, c 264.6, viscosity 1 mPa s, cutoff 2s = 6.4 um
 # (stock takes it as its h), dt 0.001 us, units micro, no wall, no turgor, no osmosis; the script
@@ -196,4 +202,9 @@ fi
 if [ "${RESPA:-1}" != 0 ]; then
   echo
   NP=$NP PYTHON=$PYTHON bash "$bench/respa.sh" "$work/respa" "${RESPA_REPEAT:-1}"
+fi
+if [ "${TISSUE:-1}" != 0 ]; then
+  echo
+  echo "(e) tissue on MPI: the 8- and 27-cell coarse blocks, 1 and 2 ranks, best of $REPEAT"
+  PYTHON=$PYTHON bash "$here/tools/benchmark-tissue.sh" -s "2 3" -p "1 2" -b "" -r "$REPEAT"
 fi
