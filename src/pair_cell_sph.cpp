@@ -37,7 +37,6 @@
 #include "respa.h"
 #include "update.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -136,7 +135,6 @@ void PairCellSPH::find_candidates()
     maxfirst = inum + 1;
     memory->destroy(pair_first);
     memory->create(pair_first, maxfirst, "pair:pair_first");
-    std::fill(pair_first, pair_first + maxfirst, 0);
   }
   cand_build = neighbor->ncalls;
   cand_nall = atom->nlocal + atom->nghost;
@@ -170,6 +168,71 @@ CELLMECH_SIMD_CLONES static void kernel_wr_sweep(double *__restrict w, int n, do
   for (int k = 0; k < n; k++) w[k] = kernel_wr(w[k], inv_s, wr_norm);
 }
 
+/* ----------------------------------------------------------------------
+   The candidates k0 .. kend-1 of a particle at (xi, yi, zi) that lie inside the support, appended
+   to the pair list from npair with their r^2; returns the new count. With BRANCHLESS every
+   candidate is stored and the count moves past it only if it is inside, without a branch.
+------------------------------------------------------------------------- */
+
+template <bool BRANCHLESS>
+static inline int keep_inside(const int *cand_j, int k0, int kend, const double *x, double xi,
+                              double yi, double zi, const int *type, const double *cutsqi,
+                              int *pair_j, double *pair_wr, int npair)
+{
+  for (int k = k0; k < kend; k++) {
+    const int j = cand_j[k];
+    const double delx = xi - x[3 * j];
+    const double dely = yi - x[3 * j + 1];
+    const double delz = zi - x[3 * j + 2];
+    const double rsq = delx * delx + dely * dely + delz * delz;
+    if constexpr (BRANCHLESS) {
+      pair_j[npair] = j;
+      pair_wr[npair] = rsq;
+      npair += (rsq < cutsqi[type[j]]);
+    } else {
+      if (rsq >= cutsqi[type[j]]) continue;
+      pair_j[npair] = j;
+      pair_wr[npair] = rsq;
+      npair++;
+    }
+  }
+  return npair;
+}
+
+/* ----------------------------------------------------------------------
+   The kind of distance test for this search. Which candidates lie inside the support: a branch
+   on it is nearly free where the CPU's predictor learns the pattern (the regular lists of a
+   lattice at rest) and mispredicted at every turn where it cannot (a moving fluid's lists, atoms
+   re-sorted: a tenth of the full cell's step); a test without a branch costs a little in the
+   first case and saves that in the second. With search auto the faster is measured, as FFTW's
+   planner measures its plans: at each setup and every SEARCH_REPLAN searches, one search
+   untimed, then SEARCH_PLAN - SEARCH_TIMED - 1 without a branch and SEARCH_TIMED with one (the
+   predictor learns over a few); search_took keeps the shortest time of each kind and, at the
+   plan's end, the faster kind, which serves until the next plan. Both kinds keep the same pairs
+   in the same order, so the choice changes no bit, only the time.
+------------------------------------------------------------------------- */
+
+int PairCellSPH::search_kind()
+{
+  if (search_choice != SEARCH_AUTO) return search_choice;
+  if (update->setupflag || ++search_count >= SEARCH_REPLAN) {
+    search_count = 0;
+    search_trials = SEARCH_PLAN;
+    search_time[SEARCH_BRANCH] = search_time[SEARCH_BRANCHLESS] = HUGE_VAL;
+  }
+  if (search_trials == 0 || search_trials == SEARCH_PLAN) return search_mode;
+  return search_trials > SEARCH_TIMED ? SEARCH_BRANCHLESS : SEARCH_BRANCH;
+}
+
+void PairCellSPH::search_took(int kind, double seconds)
+{
+  if (search_trials == 0) return;
+  if (search_trials < SEARCH_PLAN) search_time[kind] = MIN(search_time[kind], seconds);
+  if (--search_trials == 0)
+    search_mode = search_time[SEARCH_BRANCHLESS] < search_time[SEARCH_BRANCH] ? SEARCH_BRANCHLESS
+                                                                              : SEARCH_BRANCH;
+}
+
 /* ---------------------------------------------------------------------- */
 
 template <bool CONTINUITY> void PairCellSPH::find_pairs()
@@ -179,9 +242,9 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
   // minimisation, a rerun frame) builds the lists anew and then sets that count back to 0, so a
   // run after a run 0 would see the count it ended with although the atoms were re-sorted or
   // moved in between (displace_atoms, read_dump, the sort of the setup): a setup always searches.
-  const bool fresh = update->setupflag || neighbor->ncalls != cand_build ||
-      atom->nlocal + atom->nghost != cand_nall;
-  if (fresh) find_candidates();
+  if (update->setupflag || neighbor->ncalls != cand_build ||
+      atom->nlocal + atom->nghost != cand_nall)
+    find_candidates();
 
   // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
   const double *const x = atom->x ? atom->x[0] : nullptr;
@@ -194,25 +257,7 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
   const int inum = list->inum;
   const int *const ilist = list->ilist;
 
-  // Which candidates lie inside the support: a branch on it is nearly free where the CPU's
-  // predictor learns the pattern (the regular lists of a lattice at rest) and mispredicted at
-  // every turn where it cannot (a moving fluid's lists, atoms re-sorted: a tenth of the full cell's
-  // step). A test without a branch costs a little in the first case and saves that in the second.
-  // Which one is faster is measured, as FFTW's planner measures its plans: at each setup and
-  // every SEARCH_REPLAN searches, one search untimed, then SEARCH_PLAN - SEARCH_TIMED - 1 without
-  // a branch and SEARCH_TIMED with one (the predictor learns over a few), the shortest of each
-  // kind compared; the faster kind serves until the next plan. Both keep the same pairs in the
-  // same order, so the choice changes no bit, only the time.
-  if (update->setupflag || ++search_count >= SEARCH_REPLAN) {
-    search_count = 0;
-    search_trials = SEARCH_PLAN;
-    search_time[SEARCH_BRANCH] = search_time[SEARCH_BRANCHLESS] = HUGE_VAL;
-  }
-  if (search_choice != SEARCH_AUTO) search_trials = 0;
-  const bool timed = search_trials > 0 && search_trials < SEARCH_PLAN;
-  const int mode = search_choice != SEARCH_AUTO
-      ? search_choice
-      : (timed ? (search_trials > SEARCH_TIMED ? SEARCH_BRANCHLESS : SEARCH_BRANCH) : search_mode);
+  const int kind = search_kind();
   const auto start = std::chrono::steady_clock::now();
   int npair = 0;
   for (int ii = 0; ii < inum; ii++) {
@@ -232,31 +277,12 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     // the support with their r^2, the kernel sweep turns r^2 into wr in place, the continuity
     // sweep adds the terms of Eq. 7.
     const int first = npair;
-    if (mode == SEARCH_BRANCH) {
-      for (int k = cand_first[ii]; k < kend; k++) {
-        const int j = cand_j[k];
-        const double delx = xi - x[3 * j];
-        const double dely = yi - x[3 * j + 1];
-        const double delz = zi - x[3 * j + 2];
-        const double rsq = delx * delx + dely * dely + delz * delz;
-        if (rsq >= cutsqi[type[j]]) continue;
-        pair_j[npair] = j;
-        pair_wr[npair] = rsq;
-        npair++;
-      }
-    } else {
-      // every candidate is stored, and the count moves past it only if it is inside
-      for (int k = cand_first[ii]; k < kend; k++) {
-        const int j = cand_j[k];
-        const double delx = xi - x[3 * j];
-        const double dely = yi - x[3 * j + 1];
-        const double delz = zi - x[3 * j + 2];
-        const double rsq = delx * delx + dely * dely + delz * delz;
-        pair_j[npair] = j;
-        pair_wr[npair] = rsq;
-        npair += (rsq < cutsqi[type[j]]);
-      }
-    }
+    if (kind == SEARCH_BRANCH)
+      npair = keep_inside<false>(cand_j, cand_first[ii], kend, x, xi, yi, zi, type, cutsqi, pair_j,
+                                 pair_wr, npair);
+    else
+      npair = keep_inside<true>(cand_j, cand_first[ii], kend, x, xi, yi, zi, type, cutsqi, pair_j,
+                                pair_wr, npair);
     if (s_uniform)
       kernel_wr_sweep(pair_wr + first, npair - first, sinv_uniform, wrnorm_uniform);
     else
@@ -279,15 +305,8 @@ template <bool CONTINUITY> void PairCellSPH::find_pairs()
     drho[i] = drhoi;
   }
   pair_first[inum] = npair;
-  if (search_trials > 0) {
-    if (timed) {
-      const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-      search_time[mode] = MIN(search_time[mode], took.count());
-    }
-    if (--search_trials == 0)
-      search_mode = search_time[SEARCH_BRANCHLESS] < search_time[SEARCH_BRANCH] ? SEARCH_BRANCHLESS
-                                                                                : SEARCH_BRANCH;
-  }
+  search_took(kind,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 /* ---------------------------------------------------------------------- */

@@ -90,7 +90,7 @@ class PairCellSPH : public Pair {
   // 1 / s and kernel_wr_norm(s), for the kernel sweep of all of an atom's pairs at once
   bool s_uniform;
   double sinv_uniform, wrnorm_uniform;
-  // the distance test of find_pairs, with a branch or without (its comment): the kind in use,
+  // the distance test of find_pairs, with a branch or without (search_kind): the kind in use,
   // the searches since it was chosen, the searches of the plan still to make, and the shortest
   // time of each kind in the plan (s)
   enum { SEARCH_BRANCH = 0, SEARCH_BRANCHLESS = 1, SEARCH_AUTO = 2 };
@@ -102,6 +102,8 @@ class PairCellSPH : public Pair {
   void allocate();
   bool pairs_of_continuity();
   void find_candidates();
+  int search_kind();
+  void search_took(int kind, double seconds);
 
   // the one neighbour-list search both passes share: fills the pair list and, with CONTINUITY,
   // adds each pair's continuity terms (Eq. 7) to d_drho

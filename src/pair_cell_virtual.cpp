@@ -98,39 +98,24 @@ void PairCellVirtual::compute(int eflag, int vflag)
                  tag[a], tag[b], tag[c], tag[b], btype);
     int *jlist = firstneigh[b];
     const int jnum = numneigh[b];
-    const double *const r0b = r0[btype];
+    bool have_vb = false;
 
-    // Two passes: the distances of all of the central node's neighbours, keeping those within
-    // r0 of the barycentre, then the forces of those. Which neighbours are inside changes at
-    // random as the fluid moves, and a branch on it in one pass was mispredicted often enough to
-    // cost as much as the forces; the second pass takes them in the list's order, so every sum is
-    // the same.
-    if ((int) inside.size() < jnum) inside.resize(jnum);
-    int ninside = 0;
     for (int jj = 0; jj < jnum; jj++) {
       const int k = jlist[jj] & NEIGHMASK;
-      const double dx = x[k][0] - B[0];
-      const double dy = x[k][1] - B[1];
-      const double dz = x[k][2] - B[2];
-      const double rsq = dx * dx + dy * dy + dz * dz;
-      const double r0bk = r0b[type[k]];
-      inside[ninside] = k;
-      ninside += (rsq < r0bk * r0bk);
-    }
-
-    // the velocity of the virtual particle only where a fluid particle touches it: most
-    // triangles have none, and its divisions are a fair part of a triangle's cost
-    if (ninside > 0)
-      for (int d = 0; d < 3; d++) VB[d] = (v[a][d] + v[b][d] + v[c][d]) / 3.0;
-    for (int kk = 0; kk < ninside; kk++) {
-      const int k = inside[kk];
       const int ktype = type[k];
       if (!setflag[btype][ktype] && !setflag[ktype][btype]) continue;
       const double dx = x[k][0] - B[0];
       const double dy = x[k][1] - B[1];
       const double dz = x[k][2] - B[2];
       const double rsq = dx * dx + dy * dy + dz * dz;
-      const double r0bk = r0b[ktype];
+      const double r0bk = r0[btype][ktype];
+      if (rsq >= r0bk * r0bk) continue;
+      // the virtual particle's velocity only where fluid touches it: most triangles have none,
+      // and its three divisions are a fair part of a triangle's cost
+      if (!have_vb) {
+        for (int d = 0; d < 3; d++) VB[d] = (v[a][d] + v[b][d] + v[c][d]) / 3.0;
+        have_vb = true;
+      }
 
       double fpair = repulsion84_fpair(f0[btype][ktype], r0bk, rsq);
       if (gamma[btype][ktype] > 0.0) {

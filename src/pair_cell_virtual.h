@@ -36,7 +36,6 @@ class PairCellVirtual : public PairCellLJ84 {
   // types with a cell/virtual coefficient: under pair_style hybrid the neighbour list skips the
   // others, so a central node of such a type has no list to walk
   std::vector<char> listed;
-  std::vector<int> inside;    // the central node's neighbours within r0 of the barycentre
 };
 
 }    // namespace LAMMPS_NS
