@@ -27,7 +27,6 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
-#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -102,8 +101,7 @@ void BondCellTether::compute(int eflag, int vflag)
   // list (a build or a setup): computed then, they spare every step a square root and a
   // division, which the divider of the CPU, the loop's bottleneck, would otherwise run for every
   // tether.
-  if (update->setupflag || neighbor->lastcall != rest_build || (int) rest.size() != nbondlist) {
-    rest_build = neighbor->lastcall;
+  if (CellMech::list_rebuilt(lmp, rest_build, rest.size(), nbondlist)) {
     rest.assign(nbondlist, 1.0);
     scale.assign(nbondlist, 0.0);
     damp.assign(nbondlist, 0.0);

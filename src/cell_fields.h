@@ -30,6 +30,8 @@
 #include "fix_cell_tether_break.h"
 #include "lammps.h"
 #include "modify.h"
+#include "neighbor.h"
+#include "update.h"
 
 #include <cmath>
 
@@ -76,6 +78,18 @@ inline double rest_length(double *const *ref, int i, int j)
   const double dy = ref[i][1] - ref[j][1];
   const double dz = ref[i][2] - ref[j][2];
   return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+// Data a style keeps per entry of LAMMPS's bond or angle list (rest lengths, rest areas) hold
+// until the list is built again: at a neighbour-list build (its timestep, neighbor->lastcall) or
+// at a setup (which builds at the timestep it starts from). True when they must be found again
+// (kept entries, list entries); stamp then takes the build's timestep.
+inline bool list_rebuilt(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::bigint &stamp, size_t kept, int n)
+{
+  if (!lmp->update->setupflag && lmp->neighbor->lastcall == stamp && kept == (size_t) n)
+    return false;
+  stamp = lmp->neighbor->lastcall;
+  return true;
 }
 
 // Area a lamella bond i-j stands for: the mean of its two nodes' shares (cellgen.py tissue).

@@ -411,8 +411,7 @@ void FixCellFluid::cell_geometry()
   const int nangle = neighbor->nanglelist;
   // a triangle's cell (that of its central node, contract: cell_fields.h) and rest area change
   // only with the angle list and the cell index (a build or a setup): found then, not each step
-  if (update->setupflag || neighbor->lastcall != tri_build || (int) tri_slot.size() != nangle) {
-    tri_build = neighbor->lastcall;
+  if (CellMech::list_rebuilt(lmp, tri_build, tri_slot.size(), nangle)) {
     tri_slot.assign(nangle, 0);
     tri_aref.assign(nangle, 0.0);
     for (int n = 0; n < nangle; n++) {
