@@ -51,7 +51,7 @@ static constexpr double MIN_AREA_RATIO = 1.0e-3;
 /* ---------------------------------------------------------------------- */
 
 AngleCellMembrane::AngleCellMembrane(LAMMPS *_lmp) :
-    Angle(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), breakable(0)
+    Angle(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), breaker(nullptr)
 {
   born_matrix_enable = 0;
   writedata = 1;
@@ -103,12 +103,11 @@ void AngleCellMembrane::compute(int eflag, int vflag)
       double lam1, lam2;
       membrane_stretches(s, lam1, lam2);
       // tension only: lam1 >= lam2, so a triangle shortened in every direction never fails. It
-      // leaves this step's angle list now and the topology in process_failures().
+      // leaves the angle list now; fix CELL_TETHER_BREAK takes it out of the topology on every
+      // rank.
       if (lam1 > lamf[type]) {
         anglelist[n][3] = 0;
-        std::array<tagint, 3> t = {atom->tag[ia], atom->tag[ib], atom->tag[ic]};
-        std::sort(t.begin(), t.end());
-        failed.push_back(t);
+        breaker->triangle_failed(atom->tag[ia], atom->tag[ib], atom->tag[ic]);
         continue;
       }
     }
@@ -131,28 +130,7 @@ void AngleCellMembrane::compute(int eflag, int vflag)
     if (evflag)
       ev_tally(ia, ib, ic, nlocal, newton_bond, eangle, fa, fc, a[0], a[1], a[2], c[0], c[1], c[2]);
   }
-  if (breakable) process_failures();
-}
-
-/* ----------------------------------------------------------------------
-   Gather the triangles failed in this step on all ranks and let every rank
-   update its own atoms' topology (fix CELL_TETHER_BREAK::apply_triangles)
-------------------------------------------------------------------------- */
-
-void AngleCellMembrane::process_failures()
-{
-  std::vector<tagint> mine;
-  for (const auto &t : failed) mine.insert(mine.end(), t.begin(), t.end());
-  failed.clear();
-  const std::vector<tagint> all = FixCellTetherBreak::gather(lmp, mine);
-  if (all.empty()) return;
-  // with newton_bond off every rank that lists a triangle saw it fail
-  std::vector<std::array<tagint, 3>> triangles;
-  for (size_t k = 0; k + 2 < all.size(); k += 3)
-    triangles.push_back({all[k], all[k + 1], all[k + 2]});
-  std::sort(triangles.begin(), triangles.end());
-  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
-  FixCellTetherBreak::ensure(lmp)->apply_triangles(triangles);
+  if (breaker) breaker->computed();
 }
 
 /* ----------------------------------------------------------------------
@@ -322,10 +300,10 @@ void AngleCellMembrane::init_style()
 
   // triangles that can fail need the topology bookkeeping of fix CELL_TETHER_BREAK (made by
   // angle_coeff, or here for coefficients from a restart file, before the fixes are initialised)
-  breakable = 0;
+  breaker = nullptr;
+  bool breakable = false;
   for (int i = 1; i <= atom->nangletypes; i++)
-    if (setflag[i] && lamf[i] > 0.0) breakable = 1;
-  failed.clear();
+    if (setflag[i] && lamf[i] > 0.0) breakable = true;
   if (breakable) {
     // the nodes of an edge whose triangles have all failed become a non-bonded pair, as those of
     // a broken tether (bond style cell/tether): the same only with 1-3 and 1-4 weights 1
@@ -335,7 +313,7 @@ void AngleCellMembrane::init_style()
                  "lj 0 1 1' (got lj {} {} {}): an edge without triangles turns its nodes into a "
                  "non-bonded pair",
                  force->special_lj[1], force->special_lj[2], force->special_lj[3]);
-    FixCellTetherBreak::ensure(lmp);
+    breaker = FixCellTetherBreak::ensure(lmp);
   }
 }
 

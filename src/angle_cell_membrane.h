@@ -49,10 +49,10 @@ class AngleCellMembrane : public Angle {
  protected:
   double *G, *t0, *gamma, *lamf;
   int iref;         // index of the reference-position array d2_cellref in atom->darray
-  int breakable;    // some angle type has a critical stretch lamf
-  std::vector<std::array<tagint, 3>> failed;    // triangles failed on this rank, this step
+  // the bookkeeping of failures (fix CELL_TETHER_BREAK) when some angle type has a critical
+  // stretch lamf, else null
+  class FixCellTetherBreak *breaker;
 
-  void process_failures();
   bool shape(int ia, int ib, int ic, CellPhysics::MembraneRest &, CellPhysics::MembraneStrain &,
              double a[3], double c[3]);
   void add_damping(int type, const int node[3], double *fn[3]);

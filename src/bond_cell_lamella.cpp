@@ -48,7 +48,7 @@ using namespace CellPhysics;
 
 BondCellLamella::BondCellLamella(LAMMPS *_lmp) :
     Bond(_lmp), sigma(nullptr), Gc(nullptr), gamma(nullptr), dc(nullptr), iref(-1), ialam(-1),
-    lmax(0.0)
+    lmax(0.0), breaker(nullptr)
 {
   born_matrix_enable = 0;
 }
@@ -123,15 +123,16 @@ void BondCellLamella::compute(int eflag, int vflag)
     const double delta = r - r0;
     const double A = CellMech::lamella_area(alam, i1, i2);
 
-    // Debonding is irreversible: the bond leaves the bond arrays of the atom(s) storing it now;
-    // special lists and the record follow in process_debonds()
+    // Debonding is irreversible: the bond leaves the bond list and the bond arrays of the
+    // atom(s) storing it now; fix CELL_LAMELLA_BREAK updates the special lists and the record on
+    // every rank
     if (delta > cohesive_break_opening(dc[type])) {
       bondlist[n][2] = 0;
       FixCellTetherBreak::remove_bond(atom, i1, tag[i2]);
       if (!newton_bond && i2 < nlocal) FixCellTetherBreak::remove_bond(atom, i2, tag[i1]);
-      debonded.push_back({MIN(tag[i1], tag[i2]), MAX(tag[i1], tag[i2]),
-                          tag[i1] < tag[i2] ? mol[i1] : mol[i2],
-                          tag[i1] < tag[i2] ? mol[i2] : mol[i1], A});
+      const bool first = tag[i1] < tag[i2];
+      breaker->debonded(first ? tag[i1] : tag[i2], first ? tag[i2] : tag[i1],
+                        first ? mol[i1] : mol[i2], first ? mol[i2] : mol[i1], A);
       continue;
     }
 
@@ -156,60 +157,7 @@ void BondCellLamella::compute(int eflag, int vflag)
     }
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
   }
-  process_debonds();
-}
-
-using Event = FixCellLamellaBreak::Event;
-
-static bool tag_order(const Event &a, const Event &b)
-{
-  return std::make_pair(a.tag1, a.tag2) < std::make_pair(b.tag1, b.tag2);
-}
-
-static bool same_bond(const Event &a, const Event &b)
-{
-  return a.tag1 == b.tag1 && a.tag2 == b.tag2;
-}
-
-/* ----------------------------------------------------------------------
-   Every rank must update its own atoms' special lists and decide the same
-   re-neighboring, so the debonds of a step are gathered from all ranks.
-   On more than one rank, which ranks have any is only known after one
-   reduction of a single int per force call (as for tethers; a lamella can
-   always debond); the gathers follow only in the rare steps that have
-   debonds. One rank makes no MPI call.
-------------------------------------------------------------------------- */
-
-void BondCellLamella::process_debonds()
-{
-  const int nmine = (int) debonded.size();
-  // one rank has nobody to tell: no collective call in the (many) steps without a debond
-  int nall = nmine;
-  if (comm->nprocs > 1) MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
-  if (nall == 0) return;
-
-  // tags and cells as tagints, areas as doubles: two gathers keep bigbig tags exact (only in
-  // the rare steps with debonds)
-  std::vector<tagint> tmine;
-  std::vector<double> amine;
-  for (const auto &e : debonded) {
-    tmine.insert(tmine.end(), {e.tag1, e.tag2, e.mol1, e.mol2});
-    amine.push_back(e.area);
-  }
-  const std::vector<tagint> tall = CellMech::allgather_list(tmine, MPI_LMP_TAGINT, world);
-  const std::vector<double> aall = CellMech::allgather_list(amine, MPI_DOUBLE, world);
-  debonded.clear();
-
-  // with newton_bond off both owners of a bond saw it debond; sorted, the order (and so the
-  // table and the log) does not depend on the domain decomposition
-  std::vector<Event> events;
-  for (int k = 0; k < nall; k++)
-    events.push_back({tall[4 * k], tall[4 * k + 1], tall[4 * k + 2], tall[4 * k + 3], aall[k]});
-  std::sort(events.begin(), events.end(), tag_order);
-  events.erase(std::unique(events.begin(), events.end(), same_bond), events.end());
-
-  atom->nbonds -= (bigint) events.size();
-  break_fix()->apply(events);
+  breaker->computed();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -360,11 +308,11 @@ void BondCellLamella::init_style()
   MPI_Allreduce(&lmax_local, &lmax, 1, MPI_DOUBLE, MPI_MAX, world);
 
   update_dc();
-  debonded.clear();
   // made by bond_coeff, or here for coefficients from a restart file, before the fixes are
   // initialised
   add_break_fix();
-  break_fix()->set_log(logfile);
+  breaker = break_fix();
+  breaker->set_log(logfile);
 }
 
 /* ---------------------------------------------------------------------- */

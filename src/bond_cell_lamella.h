@@ -46,10 +46,9 @@ class BondCellLamella : public Bond {
   int ialam;                     // index of the per-bond area share d_alam in atom->dvector
   double lmax;                   // largest rest length, for the bond-extent check of LAMMPS
   std::string logfile;           // debond event log (bond_style cell/lamella log FILE)
-  std::vector<FixCellLamellaBreak::Event> debonded;    // debonded on this rank, this step
+  FixCellLamellaBreak *breaker;    // the bookkeeping of debonds (fix CELL_LAMELLA_BREAK)
 
   void update_dc();
-  void process_debonds();
   FixCellLamellaBreak *break_fix();
   void add_break_fix();
 

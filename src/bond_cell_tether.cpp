@@ -39,7 +39,7 @@ using namespace CellPhysics;
 
 BondCellTether::BondCellTether(LAMMPS *_lmp) :
     Bond(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), lmax(0.0),
-    checked(0), breakable(0)
+    checked(0), breaker(nullptr)
 {
   born_matrix_enable = 0;
 }
@@ -154,13 +154,14 @@ void BondCellTether::compute(int eflag, int vflag)
           "fix property/atom defined with 'ghost yes'?)",
           tag[i1], tag[i2], lam[n]);
 
-    // Failure is tension only: a compressed tether never breaks. The bond leaves the bond arrays
-    // of the atom(s) storing it now; the rest of the topology follows in process_breaks().
+    // Failure is tension only: a compressed tether never breaks. The bond leaves the bond list
+    // and the bond arrays of the atom(s) storing it now; fix CELL_TETHER_BREAK takes the rest of
+    // the topology with it on every rank.
     if (lamf[type] > 0.0 && lam[n] > lamf[type]) {
       bondlist[n][2] = 0;
       FixCellTetherBreak::remove_bond(atom, i1, tag[i2]);
       if (!newton_bond && i2 < nlocal) FixCellTetherBreak::remove_bond(atom, i2, tag[i1]);
-      broken.emplace_back(MIN(tag[i1], tag[i2]), MAX(tag[i1], tag[i2]));
+      breaker->tether_broke(tag[i1], tag[i2]);
       continue;
     }
 
@@ -179,36 +180,7 @@ void BondCellTether::compute(int eflag, int vflag)
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fb, dx[n], dy[n], dz[n]);
   }
   checked = 1;
-  if (breakable) process_breaks();
-}
-
-/* ----------------------------------------------------------------------
-   Gather the tethers broken in this step on all ranks, so that every rank
-   updates its own atoms' special lists and triangles (fix CELL_TETHER_BREAK)
-   and the global bond count. Only for bond types that can break; on more
-   than one rank it costs one small reduction per step.
-------------------------------------------------------------------------- */
-
-void BondCellTether::process_breaks()
-{
-  std::vector<tagint> mine;
-  for (const auto &b : broken) {
-    mine.push_back(b.first);
-    mine.push_back(b.second);
-  }
-  broken.clear();
-  const std::vector<tagint> all = FixCellTetherBreak::gather(lmp, mine);
-  if (all.empty()) return;
-  const int nall = (int) all.size() / 2;
-
-  // with newton_bond off both owners of a tether saw it break
-  std::vector<std::pair<tagint, tagint>> pairs;
-  for (int k = 0; k < nall; k++) pairs.emplace_back(all[2 * k], all[2 * k + 1]);
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-
-  atom->nbonds -= (bigint) pairs.size();
-  FixCellTetherBreak::ensure(lmp)->apply(pairs);
+  if (breaker) breaker->computed();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -334,10 +306,10 @@ void BondCellTether::init_style()
 
   // tethers that can break need the topology bookkeeping of fix CELL_TETHER_BREAK (made by
   // bond_coeff, or here for coefficients from a restart file, before the fixes are initialised)
-  breakable = 0;
+  breaker = nullptr;
+  bool breakable = false;
   for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i] && lamf[i] > 0.0) breakable = 1;
-  broken.clear();
+    if (setflag[i] && lamf[i] > 0.0) breakable = true;
   if (breakable) {
     // a broken tether's nodes leave each other's 1-2 list and become an ordinary pair (or 1-3
     // when the special list is rebuilt from the bonds): the same only with 1-3 and 1-4 weights 1
@@ -346,7 +318,7 @@ void BondCellTether::init_style()
                  "Bond style cell/tether with a critical stretch lamf requires 'special_bonds lj "
                  "0 1 1' (got lj {} {} {}): broken tethers turn their nodes into a non-bonded pair",
                  force->special_lj[1], force->special_lj[2], force->special_lj[3]);
-    add_break_fix();
+    breaker = FixCellTetherBreak::ensure(lmp);
   }
 }
 

@@ -43,8 +43,9 @@ class BondCellTether : public Bond {
   int iref;         // index of the reference-position array d2_cellref in atom->darray
   double lmax;      // largest rest length, for the bond-extent check of LAMMPS
   int checked;      // reference positions checked for plausibility in this run
-  int breakable;    // some bond type has a critical stretch lamf
-  std::vector<std::pair<tagint, tagint>> broken;    // tag pairs broken on this rank, this step
+  // the bookkeeping of failures (fix CELL_TETHER_BREAK) when some bond type has a critical
+  // stretch lamf, else null
+  class FixCellTetherBreak *breaker;
   // per entry of neighbor->bondlist since its last build: rest length, tether_tension_scale,
   // damping coefficient; the timestep of that build
   bigint rest_build = -1;
@@ -53,7 +54,6 @@ class BondCellTether : public Bond {
   static constexpr int SWEEP_FIELDS = 7;
   std::vector<double> sweep;
 
-  void process_breaks();
   void add_break_fix();
 
   void allocate();

@@ -266,7 +266,7 @@ void ComputeCellContacts::compute_array()
   }
 
   // debonded bonds: the per-cell-pair table of fix cell_debonded (cell i, cell j, bonds, area)
-  auto *debonded = modify->get_fix_by_id(FixCellLamellaBreak::ID);
+  auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
   if (debonded && debonded->array_flag)
     for (int r = 0; r < debonded->size_array_rows; r++) {
       auto &g = global_row((int) debonded->compute_array(r, 0), (int) debonded->compute_array(r, 1));

@@ -3,21 +3,22 @@
    cellmech: internal fix CELL_LAMELLA_BREAK
 
    When a middle-lamella bond debonds, bond style cell/lamella removes it
-   from the bond arrays of the atom that stores it and hands the events of
-   all bonds debonded in this step (gathered from every rank) to apply().
-   Every rank then
+   from the bond list and the bond arrays of the atom that stores it and
+   hands it to debonded(). When every rank has the debonds (FixCellFailure:
+   at the neighbor build of the next step, or earlier for an output), each
+   rank
    - takes the two nodes out of each other's 1-2 special list (the same
-     code as for a broken tether, FixCellTetherBreak::remove_special12) and
-     re-neighbors on the next step, so that the nodes of the two cells
-     become an ordinary contact pair that the 8-4 repulsion keeps apart: a
-     debonded interface still resists interpenetration, it only lost its
-     tensile strength. A lamella bond is no triangle edge: no angles change;
+     code as for a broken tether, FixCellTetherBreak::remove_special12);
+     after that build the nodes of the two cells are an ordinary contact
+     pair that the 8-4 repulsion keeps apart: a debonded interface still
+     resists interpenetration, it only lost its tensile strength. A lamella
+     bond is no triangle edge: no angles change;
    - counts the debond at its nodes that it owns (per-atom vector; travels
      with the atoms and is written to restart files);
-   - adds it to the table of debonds per pair of cells. All ranks see the
-     same events in the same order, so the table is identical everywhere
-     without communication; it is written to restart files by rank 0 and
-     restored on all ranks.
+   - adds it to the table of debonds per pair of cells, with the step and
+     time it debonded. All ranks see the same events in the same order, so
+     the table is identical everywhere without communication; it is written
+     to restart files by rank 0 and restored on all ranks.
    Tether rupture has its own fix (cell_broken): a crack through a wall and
    a cell separating from its neighbour are different failure modes.
 ------------------------------------------------------------------------- */
@@ -25,6 +26,7 @@
 #include "fix_cell_lamella_break.h"
 
 #include "atom.h"
+#include "cell_mpi.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_cell_tether_break.h"
@@ -41,7 +43,7 @@ static constexpr int NCOLS = 6;    // cell i, cell j, count, area, t_first, t_la
 /* ---------------------------------------------------------------------- */
 
 FixCellLamellaBreak::FixCellLamellaBreak(LAMMPS *_lmp, int narg, char **arg) :
-    Fix(_lmp, narg, arg), ndebond(nullptr), ntotal(0), logfp(nullptr)
+    FixCellFailure(_lmp, narg, arg), ndebond(nullptr), ntotal(0), logfp(nullptr)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal fix CELL_LAMELLA_BREAK command: expected no arguments, got {}",
@@ -59,8 +61,6 @@ FixCellLamellaBreak::FixCellLamellaBreak(LAMMPS *_lmp, int narg, char **arg) :
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
-  force_reneighbor = 1;
-  next_reneighbor = -1;
 
   FixCellLamellaBreak::grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -76,20 +76,17 @@ FixCellLamellaBreak::~FixCellLamellaBreak()
   if (logfp) fclose(logfp);
 }
 
-int FixCellLamellaBreak::setmask()
-{
-  return 0;
-}
-
 /* ---------------------------------------------------------------------- */
 
 double FixCellLamellaBreak::compute_scalar()
 {
+  sync();
   return (double) ntotal;
 }
 
 double FixCellLamellaBreak::compute_array(int i, int j)
 {
+  sync();
   if (i < 0 || i >= (int) rows.size() || j < 0 || j >= NCOLS) return 0.0;
   return rows[i][j];
 }
@@ -131,11 +128,69 @@ void FixCellLamellaBreak::set_log(const std::string &file)
 
 /* ---------------------------------------------------------------------- */
 
+void FixCellLamellaBreak::debonded(tagint tag1, tagint tag2, tagint mol1, tagint mol2, double area)
+{
+  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  pending.push_back({tag1, tag2, mol1, mol2, area, update->ntimestep, time});
+  failed();
+}
+
+static bool tag_order(const FixCellLamellaBreak::Event &a, const FixCellLamellaBreak::Event &b)
+{
+  return std::make_pair(a.tag1, a.tag2) < std::make_pair(b.tag1, b.tag2);
+}
+
+static bool same_bond(const FixCellLamellaBreak::Event &a, const FixCellLamellaBreak::Event &b)
+{
+  return a.tag1 == b.tag1 && a.tag2 == b.tag2;
+}
+
+/* ----------------------------------------------------------------------
+   all ranks' debonds on all ranks, in rank order, then sorted by tags: the
+   same table and log on any number of ranks. With newton_bond off both
+   owners of a bond saw it debond. Tags and cells travel as tagints, the
+   rest as doubles, so that bigbig tags stay exact.
+------------------------------------------------------------------------- */
+
+bool FixCellLamellaBreak::flush()
+{
+  std::vector<tagint> tags;
+  std::vector<double> values;
+  for (const auto &e : pending) {
+    tags.insert(tags.end(), {e.tag1, e.tag2, e.mol1, e.mol2});
+    values.insert(values.end(), {e.area, (double) e.step, e.time});
+  }
+  pending.clear();
+  int nall = (int) tags.size() / 4;
+  if (comm->nprocs > 1) {
+    // the one collective of a build without debonds
+    const int nmine = nall;
+    MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
+    if (nall == 0) return false;
+    tags = CellMech::allgather_list(tags, MPI_LMP_TAGINT, world);
+    values = CellMech::allgather_list(values, MPI_DOUBLE, world);
+  } else if (nall == 0)
+    return false;
+
+  std::vector<Event> events;
+  for (int k = 0; k < nall; k++)
+    events.push_back({tags[4 * k], tags[4 * k + 1], tags[4 * k + 2], tags[4 * k + 3], values[3 * k],
+                      (bigint) values[3 * k + 1], values[3 * k + 2]});
+  // stable: a bond seen by two ranks debonded in one step, so either copy will do
+  std::stable_sort(events.begin(), events.end(), tag_order);
+  events.erase(std::unique(events.begin(), events.end(), same_bond), events.end());
+
+  atom->nbonds -= (bigint) events.size();
+  apply(events);
+  return true;
+}
+
+/* ---------------------------------------------------------------------- */
+
 void FixCellLamellaBreak::apply(const std::vector<Event> &events)
 {
   if (events.empty()) return;
   const int nlocal = atom->nlocal;
-  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
 
   for (const auto &e : events) {
     for (int side = 0; side < 2; side++) {
@@ -146,19 +201,17 @@ void FixCellLamellaBreak::apply(const std::vector<Event> &events)
     }
     const auto key = std::make_pair(std::min(e.mol1, e.mol2), std::max(e.mol1, e.mol2));
     auto it = table.find(key);
-    if (it == table.end()) it = table.emplace(key, Debond{0, 0.0, time, time}).first;
+    if (it == table.end()) it = table.emplace(key, Debond{0, 0.0, e.time, e.time}).first;
     it->second.count++;
     it->second.area += e.area;
-    it->second.tlast = time;
+    it->second.tfirst = std::min(it->second.tfirst, e.time);
+    it->second.tlast = std::max(it->second.tlast, e.time);
     if (logfp)
-      utils::print(logfp, "{} {:.10g} {} {} {} {} {:.10g}\n", update->ntimestep, time, e.tag1,
-                   e.tag2, key.first, key.second, e.area);
+      utils::print(logfp, "{} {:.10g} {} {} {} {} {:.10g}\n", e.step, e.time, e.tag1, e.tag2,
+                   key.first, key.second, e.area);
   }
   if (logfp) fflush(logfp);
   update_rows();
-
-  // the pair is no longer excluded: rebuild the neighbor lists before the next force call
-  next_reneighbor = update->ntimestep + 1;
 }
 
 /* ----------------------------------------------------------------------

@@ -14,7 +14,7 @@ FixStyle(CELL_LAMELLA_BREAK,FixCellLamellaBreak);
 #ifndef LMP_FIX_CELL_LAMELLA_BREAK_H
 #define LMP_FIX_CELL_LAMELLA_BREAK_H
 
-#include "fix.h"
+#include "fix_cell_failure.h"
 
 #include <cstdio>
 #include <map>
@@ -24,14 +24,16 @@ FixStyle(CELL_LAMELLA_BREAK,FixCellLamellaBreak);
 
 namespace LAMMPS_NS {
 
-class FixCellLamellaBreak : public Fix {
+class FixCellLamellaBreak : public FixCellFailure {
  public:
   static constexpr const char *ID = "cell_debonded";
 
-  // one debonded lamella bond: its atoms and their cells (molecule IDs), its area
+  // one debonded lamella bond: its atoms and their cells (molecule IDs), its area, when
   struct Event {
     tagint tag1, tag2, mol1, mol2;
     double area;
+    bigint step;
+    double time;
   };
   // the debonds between one pair of cells
   struct Debond {
@@ -43,17 +45,14 @@ class FixCellLamellaBreak : public Fix {
 
   FixCellLamellaBreak(class LAMMPS *, int, char **);
   ~FixCellLamellaBreak() override;
-  int setmask() override;
   double compute_scalar() override;
   double compute_array(int, int) override;
 
-  // every rank calls this with the same list: the bonds debonded this step, without duplicates
-  void apply(const std::vector<Event> &events);
+  // a lamella bond (tag1 < tag2, in cells mol1 and mol2, of area A) debonded on this rank; it
+  // has left the bond list and the bond arrays of the atom(s) storing it here
+  void debonded(tagint tag1, tagint tag2, tagint mol1, tagint mol2, double area);
   // event log (rank 0 appends one line per debond); empty: none
   void set_log(const std::string &file);
-
-  // the debonds per pair of cells (cell i < cell j), identical on all ranks
-  const std::map<std::pair<tagint, tagint>, Debond> &pairs() const { return table; }
 
   void write_restart(FILE *) override;
   void restart(char *) override;
@@ -67,7 +66,8 @@ class FixCellLamellaBreak : public Fix {
   int size_restart(int) override;
 
  protected:
-  double *ndebond;    // per atom: lamella bonds debonded at this node
+  double *ndebond;               // per atom: lamella bonds debonded at this node
+  std::vector<Event> pending;    // found on this rank since the last sync (FixCellFailure)
   std::map<std::pair<tagint, tagint>, Debond> table;
   std::vector<std::vector<double>> rows;    // the table as compute_array() gives it
   bigint ntotal;                            // debonded bonds, the sum of the table's counts
@@ -75,6 +75,9 @@ class FixCellLamellaBreak : public Fix {
   FILE *logfp;
 
   void update_rows();
+  bool flush() override;
+  // every rank calls this with the same list: the bonds debonded, without duplicates
+  void apply(const std::vector<Event> &events);
 };
 
 }    // namespace LAMMPS_NS

@@ -2,12 +2,13 @@
    SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: internal fix CELL_TETHER_BREAK
 
-   When a tether breaks, bond style cell/tether removes it from the bond
-   arrays of the atom that stores it and hands the tag pairs of all tethers
-   broken in this step (gathered from every rank) to apply(). Every rank
-   then brings its own atoms' topology in line:
+   A tether broken in bond style cell/tether, or a triangle failed in angle
+   style cell/membrane, leaves its rank's bond or angle list at once; the
+   style hands it to tether_broke() or triangle_failed(). When every rank
+   has them (FixCellFailure: at the neighbor build of the next step, or
+   earlier for an output), each rank brings its own atoms' topology in line:
    - the two nodes leave each other's 1-2 special list, so that after the
-     forced re-neighboring they are an ordinary wall-wall pair and the 8-4
+     re-neighboring they are an ordinary wall-wall pair and the 8-4
      contact repels them (their 1-3 and 1-4 weights are 1, as for any pair);
    - each triangle (angle) that has the broken tether as an edge leaves
      the topology: pair cell/virtual no longer puts a virtual particle on
@@ -18,9 +19,10 @@
      triangle drift apart farther than the ghost cutoff.
    - each hinge (dihedral) with one of those triangles as a wing leaves
      the topology with it.
-   Removing the bond itself too keeps a special list rebuilt from the bonds
-   -- after read_restart or special_bonds -- equal to the one updated here,
-   and write_data writes the torn wall as it is.
+   The neighbor lists in use keep these until that build, on every rank
+   alike. Removing the bond itself too keeps a special list rebuilt from
+   the bonds -- after read_restart or special_bonds -- equal to the one
+   updated here, and write_data writes the torn wall as it is.
    Failed membrane triangles (angle style cell/membrane) go through the
    same steps in apply_triangles(): the triangle leaves the topology here,
    and an edge of it is counted as broken (the wall is open along it) from
@@ -34,13 +36,12 @@
 
 #include "atom.h"
 #include "atom_vec.h"
+#include "cell_mpi.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
-#include "neighbor.h"
-#include "update.h"
 
 #include <algorithm>
 
@@ -50,7 +51,7 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixCellTetherBreak::FixCellTetherBreak(LAMMPS *_lmp, int narg, char **arg) :
-    Fix(_lmp, narg, arg), nbroken(nullptr)
+    FixCellFailure(_lmp, narg, arg), nbroken(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix CELL_TETHER_BREAK command: expected no arguments");
   restart_peratom = 1;
@@ -60,8 +61,6 @@ FixCellTetherBreak::FixCellTetherBreak(LAMMPS *_lmp, int narg, char **arg) :
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
-  force_reneighbor = 1;
-  next_reneighbor = -1;
 
   FixCellTetherBreak::grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -76,13 +75,9 @@ FixCellTetherBreak::~FixCellTetherBreak()
   memory->destroy(nbroken);
 }
 
-int FixCellTetherBreak::setmask()
-{
-  return 0;
-}
-
 double FixCellTetherBreak::compute_scalar()
 {
+  sync();
   // every broken tether is counted at both of its nodes
   double mine = 0.0, all = 0.0;
   for (int i = 0; i < atom->nlocal; i++) mine += nbroken[i];
@@ -104,27 +99,59 @@ FixCellTetherBreak *FixCellTetherBreak::ensure(LAMMPS *lmp)
   return mine;
 }
 
-std::vector<tagint> FixCellTetherBreak::gather(LAMMPS *lmp, const std::vector<tagint> &mine)
+void FixCellTetherBreak::tether_broke(tagint a, tagint b)
 {
-  // one rank has nobody to tell: no collective call in the (many) steps where nothing failed
-  if (lmp->comm->nprocs == 1) return mine;
-  // several ranks must all learn of a failure in the same step (the topology and the forced
-  // re-neighboring must agree), so a step without one still costs one reduction of an int
-  MPI_Comm world = lmp->world;
-  int nmine = (int) mine.size(), nall = 0;
-  MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
-  if (nall == 0) return {};
-  const int nprocs = lmp->comm->nprocs;
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 0, off = 0; p < nprocs; p++) {
-    displs[p] = off;
-    off += counts[p];
-  }
-  std::vector<tagint> all(nall);
-  MPI_Allgatherv(mine.data(), nmine, MPI_LMP_TAGINT, all.data(), counts.data(), displs.data(),
-                 MPI_LMP_TAGINT, world);
-  return all;
+  pending_tethers.emplace_back(std::min(a, b), std::max(a, b));
+  failed();
+}
+
+void FixCellTetherBreak::triangle_failed(tagint a, tagint b, tagint c)
+{
+  std::array<tagint, 3> t = {a, b, c};
+  std::sort(t.begin(), t.end());
+  pending_triangles.push_back(t);
+  failed();
+}
+
+/* ----------------------------------------------------------------------
+   all ranks' failures on all ranks, in rank order, then sorted: the same
+   lists, and so the same updates, on any number of ranks. With newton_bond
+   off both owners of a tether (every owner of a triangle) found it.
+------------------------------------------------------------------------- */
+
+bool FixCellTetherBreak::flush()
+{
+  std::vector<tagint> pairs_flat, triangles_flat;
+  for (const auto &p : pending_tethers) pairs_flat.insert(pairs_flat.end(), {p.first, p.second});
+  for (const auto &t : pending_triangles)
+    triangles_flat.insert(triangles_flat.end(), t.begin(), t.end());
+  pending_tethers.clear();
+  pending_triangles.clear();
+  if (comm->nprocs > 1) {
+    // the one collective of a build without failures
+    int mine[2] = {(int) pairs_flat.size(), (int) triangles_flat.size()}, all[2];
+    MPI_Allreduce(mine, all, 2, MPI_INT, MPI_SUM, world);
+    if (all[0] == 0 && all[1] == 0) return false;
+    if (all[0]) pairs_flat = CellMech::allgather_list(pairs_flat, MPI_LMP_TAGINT, world);
+    if (all[1]) triangles_flat = CellMech::allgather_list(triangles_flat, MPI_LMP_TAGINT, world);
+  } else if (pairs_flat.empty() && triangles_flat.empty())
+    return false;
+
+  std::vector<std::pair<tagint, tagint>> pairs;
+  for (size_t k = 0; k + 1 < pairs_flat.size(); k += 2)
+    pairs.emplace_back(pairs_flat[k], pairs_flat[k + 1]);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::vector<std::array<tagint, 3>> triangles;
+  for (size_t k = 0; k + 2 < triangles_flat.size(); k += 3)
+    triangles.push_back({triangles_flat[k], triangles_flat[k + 1], triangles_flat[k + 2]});
+  std::sort(triangles.begin(), triangles.end());
+  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+
+  atom->nbonds -= (bigint) pairs.size();
+  apply(pairs);
+  apply_triangles(triangles);
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -149,9 +176,6 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
     return false;
   };
   remove_triangles(edge_of);
-
-  // the pair is no longer excluded: rebuild the neighbor lists before the next force call
-  next_reneighbor = update->ntimestep + 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -195,7 +219,7 @@ void FixCellTetherBreak::apply_triangles(const std::vector<std::array<tagint, 3>
     return (it != edges.end() && *it == e) ? (int) (it - edges.begin()) : -1;
   };
 
-  // triangles along each of these edges before this step, on all ranks (each triangle counted
+  // triangles along each of these edges before these failures, on all ranks (each triangle counted
   // once: at its central atom, which alone stores it with newton_bond on)
   const int nlocal = atom->nlocal;
   tagint *tag = atom->tag;
@@ -227,8 +251,6 @@ void FixCellTetherBreak::apply_triangles(const std::vector<std::array<tagint, 3>
     if (after <= 0) released.push_back(edges[k]);
   }
   release_edges(released, true);
-
-  next_reneighbor = update->ntimestep + 1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -254,19 +276,6 @@ void FixCellTetherBreak::release_edges(const std::vector<std::pair<tagint, tagin
   if (!bonds) return;
   MPI_Allreduce(&removed_local, &removed, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   atom->nbonds -= removed;
-  // the current bond list is used until the next neighbor build (there is one only with a bond
-  // style); edges is sorted
-  if (force->bond) {
-    int **bondlist = neighbor->bondlist;
-    tagint *tag = atom->tag;
-    for (int n = 0; n < neighbor->nbondlist; n++) {
-      const tagint t1 = tag[bondlist[n][0]], t2 = tag[bondlist[n][1]];
-      if (bondlist[n][2] > 0 &&
-          std::binary_search(edges.begin(), edges.end(),
-                             std::make_pair(std::min(t1, t2), std::max(t1, t2))))
-        bondlist[n][2] = 0;
-    }
-  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -276,7 +285,7 @@ template <typename Pred> void FixCellTetherBreak::remove_triangles(Pred is_gone)
   const int nlocal = atom->nlocal;
   tagint *tag = atom->tag;
   // Triangles leave the angle arrays (for later neighbor builds, restarts and data files) and the
-  // global angle count ...
+  // global angle count
   bigint removed_local = 0, removed = 0;
   const int newton_bond = force->newton_bond;
   // (an atom style without angles, e.g. bond, has no triangles to update)
@@ -299,20 +308,11 @@ template <typename Pred> void FixCellTetherBreak::remove_triangles(Pred is_gone)
   }
   MPI_Allreduce(&removed_local, &removed, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   atom->nangles -= removed;
-  // ... and are switched off in the current angle list, used until the next neighbor build (there
-  // is one only with an angle style)
-  if (force->angle) {
-    int **anglelist = neighbor->anglelist;
-    for (int n = 0; n < neighbor->nanglelist; n++)
-      if (anglelist[n][3] > 0 &&
-          is_gone(tag[anglelist[n][0]], tag[anglelist[n][1]], tag[anglelist[n][2]]))
-        anglelist[n][3] = 0;
-  }
 
   // A hinge (dihedral style cell/bending: 1-2-3 and 2-3-4 the two triangles, 2-3 the shared
   // edge) bends the wall between two triangles; with either gone there is no wall left to bend
   // there, and kept it would pull the torn nodes back to their rest angle, so it leaves the
-  // dihedral arrays, the global count and the current dihedral list in the same way.
+  // dihedral arrays and the global count in the same way.
   if (!atom->avec->dihedrals_allow) return;
   auto hinge_gone = [&](tagint t1, tagint t2, tagint t3, tagint t4) {
     return is_gone(t1, t2, t3) || is_gone(t2, t3, t4);
@@ -340,14 +340,6 @@ template <typename Pred> void FixCellTetherBreak::remove_triangles(Pred is_gone)
   removed = 0;
   MPI_Allreduce(&removed_local, &removed, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   atom->ndihedrals -= removed;
-  if (force->dihedral) {
-    int **dihedrallist = neighbor->dihedrallist;
-    for (int n = 0; n < neighbor->ndihedrallist; n++)
-      if (dihedrallist[n][4] > 0 &&
-          hinge_gone(tag[dihedrallist[n][0]], tag[dihedrallist[n][1]], tag[dihedrallist[n][2]],
-                     tag[dihedrallist[n][3]]))
-        dihedrallist[n][4] = 0;
-  }
 }
 
 /* ---------------------------------------------------------------------- */

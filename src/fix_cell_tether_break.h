@@ -16,7 +16,7 @@ FixStyle(CELL_TETHER_BREAK,FixCellTetherBreak);
 #ifndef LMP_FIX_CELL_TETHER_BREAK_H
 #define LMP_FIX_CELL_TETHER_BREAK_H
 
-#include "fix.h"
+#include "fix_cell_failure.h"
 
 #include <array>
 #include <utility>
@@ -24,27 +24,21 @@ FixStyle(CELL_TETHER_BREAK,FixCellTetherBreak);
 
 namespace LAMMPS_NS {
 
-class FixCellTetherBreak : public Fix {
+class FixCellTetherBreak : public FixCellFailure {
  public:
   static constexpr const char *ID = "cell_broken";
 
   FixCellTetherBreak(class LAMMPS *, int, char **);
   ~FixCellTetherBreak() override;
-  int setmask() override;
   double compute_scalar() override;
 
   // the fix of this run, created if there is none yet (bond and angle styles that can fail)
   static FixCellTetherBreak *ensure(class LAMMPS *lmp);
-  // the tags every rank has put into mine, gathered on all ranks in rank order (empty when
-  // nothing failed anywhere); every rank calls it in the same step
-  static std::vector<tagint> gather(class LAMMPS *lmp, const std::vector<tagint> &mine);
-
-  // every rank calls this with the same list: the tag pairs of the tethers broken this step
-  void apply(const std::vector<std::pair<tagint, tagint>> &pairs);
-  // every rank calls this with the same list: the wall triangles (tags sorted within each)
-  // that failed this step (angle style cell/membrane)
-  void apply_triangles(const std::vector<std::array<tagint, 3>> &triangles);
-
+  // a tether (tags a, b) broke on this rank; it has left the bond list and the bond arrays of
+  // the atom(s) storing it here
+  void tether_broke(tagint a, tagint b);
+  // a wall triangle failed on this rank (angle style cell/membrane); it has left the angle list
+  void triangle_failed(tagint a, tagint b, tagint c);
   // drop the atom with tag other from the 1-2 special list of local atom i (also used for
   // debonded lamella bonds, fix CELL_LAMELLA_BREAK); false when it is not a 1-2 neighbour
   static bool remove_special12(class Atom *atom, int i, tagint other);
@@ -63,6 +57,14 @@ class FixCellTetherBreak : public Fix {
 
  protected:
   double *nbroken;    // per atom: broken tethers (opened wall edges) that ended at this node
+  // found on this rank since the last sync (FixCellFailure)
+  std::vector<std::pair<tagint, tagint>> pending_tethers;
+  std::vector<std::array<tagint, 3>> pending_triangles;
+  bool flush() override;
+  // every rank calls these with the same list: the tag pairs of the broken tethers, and the
+  // failed wall triangles (tags sorted within each)
+  void apply(const std::vector<std::pair<tagint, tagint>> &pairs);
+  void apply_triangles(const std::vector<std::array<tagint, 3>> &triangles);
 
   // take the triangles for which is_gone(tag1, tag2, tag3) holds out of the topology
   template <typename Pred> void remove_triangles(Pred is_gone);

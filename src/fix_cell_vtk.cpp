@@ -108,8 +108,8 @@ void FixCellVTK::write()
   int *mask = atom->mask;
 
   // points: id, molecule, unwrapped position, displacement from the reference, broken tethers
-  auto *broken = modify->get_fix_by_id(FixCellTetherBreak::ID);
-  auto *debonded = modify->get_fix_by_id(FixCellLamellaBreak::ID);
+  auto *broken = FixCellFailure::synced(lmp, FixCellTetherBreak::ID);
+  auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
   const CellMech::WallNodes is_wall(lmp);
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {

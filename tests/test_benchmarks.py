@@ -7,7 +7,8 @@ belong in docs/performance.md and docs/tissue-benchmark.md, measured on a quiet 
    ranks, even split and balanced: a row per run, the per-rank table of every 2-rank run, the
    projection to 64 and 256 ranks with efficiencies between 0 and 100%; the balanced notch holds
    its particles evenly (imbalance < 1.1, LAMMPS's Nlocal) where the even split does not.
-2. tools/benchmark.sh: the stock, cell/sph and full-cell rows with their neighbour check.
+2. tools/benchmark.sh: the stock, cell/sph and full-cell rows with their neighbour check, and case
+   (f), the reductions per step of a wall that can fail.
 3. tools/bench/rate-ensemble.sh with 2 members, 2 speeds, a short inflation and 8% strain: a row
    of windowed forces per member and speed, and the paired differences; member 2 (its fluid
    displaced by 1e-9 um, -var jitter of in.inflate) inflates to another microstate than member 1,
@@ -57,13 +58,17 @@ def tissue():
 
 
 def cell():
-    rc, out = script("benchmark.sh", "-r", 1, "-n", 20, env=dict(RESPA="0", TISSUE="0", WALLS="tether"))
+    rc, out = script("benchmark.sh", "-r", 1, "-n", 20, env=dict(
+        RESPA="0", TISSUE="0", WALLS="tether", NCOLL="40",
+        CELLMECH_MPI_COUNT_LIB=os.environ.get("CELLMECH_MPI_COUNT_LIB", "")))
     print(out)
     T.check("benchmark.sh runs", rc == 0)
     for case in (r"\(b\) stock sph/taitwater/morris", r"\(c\) cell/sph \+ cell/fluid", r"\(a\) full cell, tether wall"):
         T.check(f"benchmark.sh reports {case.replace(chr(92), '')}",
                 re.search(rf"^{case}\s+\d+\s+20\s+[\d.]+\s+[\d.e+]+", out, re.M) is not None)
     T.check("benchmark.sh checks the neighbours of the two fluid-only cases", "neighbour check:" in out)
+    T.check("benchmark.sh reports the reductions per step of a wall that can fail (f)",
+            re.search(r"^  lamf 1\.5 \(can fail, nothing does\): \d+ calls", out, re.M) is not None)
 
 
 def rate_ensemble():

@@ -14,7 +14,12 @@
 #   (e) tissue       strong scaling of the 8- and 27-cell coarse tissue blocks from 1 to 2 ranks, with
 #                    LAMMPS's timing per rank and the projection to a 1000-cell tissue on 64 and
 #                    256 ranks (tools/benchmark-tissue.sh -s "2 3" -p "1 2", a minute; TISSUE=0 skips
-#                    it; the full study with more blocks and load balancing: that script alone).
+#                    it; the full study with more blocks and load balancing: that script alone);
+#   (f) collectives  the global reductions a wall that can fail adds per step (target 6): the full
+#                    cell of (a), tether wall, NCOLL steps (default 400) on 2 ranks, with lamf 0 (it
+#                    cannot fail) and lamf 1.5 (it can, nothing does); rank 0's MPI_Allreduce calls
+#                    counted through MPI's profiling interface (build/tests/cellmech_mpi_count.so,
+#                    tests/unit/mpi_count.cpp; COLLECTIVES=0 skips it).
 # Threads (issue 12, target 5): measured with a prototype and not kept (docs/performance.md), so
 # there is no OpenMP case.
 # (b) and (c) read exactly the fluid of the generated cell.data (lattice spacing 3.01 um, clipped
@@ -207,4 +212,26 @@ if [ "${TISSUE:-1}" != 0 ]; then
   echo
   echo "(e) tissue on MPI: the 8- and 27-cell coarse blocks, 1 and 2 ranks, best of $REPEAT"
   PYTHON=$PYTHON bash "$here/tools/benchmark-tissue.sh" -s "2 3" -p "1 2" -b "" -r "$REPEAT"
+fi
+if [ "${COLLECTIVES:-1}" != 0 ]; then
+  echo
+  counter=${CELLMECH_MPI_COUNT_LIB:-$here/build/tests/cellmech_mpi_count.so}
+  ncoll=${NCOLL:-400}
+  if [ -f "$counter" ]; then
+    echo "(f) global reductions per step (target 6): the full cell, tether wall, $ncoll steps on 2 ranks; rank 0's MPI_Allreduce calls"
+    for lamf in 0 1.5; do
+      mpi_run 2 env LD_PRELOAD="$counter" CELLMECH_MPI_COUNT="$work/count.$lamf" "$LMP" -nocite \
+        -log "coll.$lamf.log" -screen none -in "$inputs/in.inflate" -var dir "$inputs" -var wall tether \
+        -var data cell.data -var nsteps "$ncoll" -var every 100 -var out "coll-$lamf.dat" \
+        -var restart_out "coll-$lamf.restart" -var lamf "$lamf" >"coll.$lamf.out" 2>&1 ||
+        { echo "benchmark: case (f) failed" >&2; tail -n 20 "coll.$lamf.out" >&2; exit 1; }
+    done
+    read -r c0 _ < "$work/count.0.0"
+    read -r c1 _ < "$work/count.1.5.0"
+    awk -v c0="$c0" -v c1="$c1" -v n="$ncoll" -v b="$(builds coll.1.5.log)" 'BEGIN {
+      printf "  lamf 0 (cannot fail): %d calls, %.2f per step\n", c0, c0 / n
+      printf "  lamf 1.5 (can fail, nothing does): %d calls, %d more over %d steps with %d neighbour builds (%.3f per step; the former failure check: 1 per step)\n", c1, c1 - c0, n, b, (c1 - c0) / n }'
+  else
+    echo "(f) skipped: no $counter (it is built with the tests: cmake --build build)"
+  fi
 fi

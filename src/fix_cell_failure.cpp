@@ -1,0 +1,152 @@
+/* ----------------------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
+   cellmech: when a failure found on one rank reaches the others
+
+   A tether, a membrane triangle or a lamella bond fails on the rank that
+   computes it. That rank takes the failed element out of its own bond or
+   angle list at once (it is not computed again). The rest -- the nodes'
+   special lists, the triangles and hinges along a broken edge, the counts
+   and the global topology sizes -- is on atoms that other ranks own, and
+   every rank must re-neighbor in the same step, or LAMMPS's collective
+   neighbor check deadlocks. So every rank must learn of a failure, and
+   from a rank it does not otherwise talk to.
+
+   A collective call in every force computation would do it (and did, one
+   reduction of an integer per step), in the many steps without failure
+   too. Instead the failure asks for a neighbor build in the next step
+   through the reduction LAMMPS makes in every step anyway: the distance
+   check (Neighbor::check_distance) reduces "has an atom moved more than
+   half the skin" over all ranks, and the failing rank makes one of its
+   atoms appear to have moved (its entry in the positions kept at the last
+   build, Neighbor::get_xhold()). Every rank then re-neighbors in the next
+   step, and before the exchange (pre_exchange) all ranks gather the
+   failures and update their atoms. The only collective left is one small
+   reduction at each neighbor build, which is a collective step anyway.
+
+   That gives the rule, on any number of ranks: the failed element stops
+   acting in the step it fails; the topology around it, the special lists
+   and the counts change at the neighbor build of the next step (as the
+   neighbor lists always did). Outputs see the failures of their own step:
+   at every output step (end_of_step), in compute_scalar and in the styles
+   that read the counts, every rank syncs first.
+
+   It needs the check in every step: neigh_modify every 1 delay 0 check yes
+   (cellmech's inputs and LAMMPS's default) without 'include' or 'once'.
+   Other settings, and minimization, fall back to a gather after every
+   force computation and a forced re-neighboring (Fix::next_reneighbor),
+   with the same rule. A build forced so in the step right after another
+   is not a dangerous build, and does not count as one.
+------------------------------------------------------------------------- */
+
+#include "fix_cell_failure.h"
+
+#include "atom.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "output.h"
+#include "update.h"
+
+#include <algorithm>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+/* ---------------------------------------------------------------------- */
+
+FixCellFailure::FixCellFailure(LAMMPS *_lmp, int narg, char **arg) :
+    Fix(_lmp, narg, arg), deferred(0), epoch(0), synced_epoch(0), since_build(0), forgiven_at(-1)
+{
+  nevery = 1;
+  force_reneighbor = 1;
+  next_reneighbor = -1;
+}
+
+int FixCellFailure::setmask()
+{
+  return PRE_EXCHANGE | END_OF_STEP;
+}
+
+void FixCellFailure::init()
+{
+  deferred = update->whichflag == 1 && neighbor->dist_check && neighbor->every == 1 &&
+      neighbor->delay == 0 && !neighbor->build_once && !neighbor->includegroup;
+  since_build = 0;
+}
+
+void FixCellFailure::setup(int /*vflag*/)
+{
+  sync();
+}
+
+void FixCellFailure::min_setup(int /*vflag*/)
+{
+  sync();
+}
+
+void FixCellFailure::pre_exchange()
+{
+  sync();
+  if (deferred && since_build) forgive_build();
+  since_build = 0;
+}
+
+void FixCellFailure::end_of_step()
+{
+  if (update->ntimestep == output->next) sync();
+}
+
+void FixCellFailure::post_run()
+{
+  sync();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellFailure::failed()
+{
+  if (!deferred) return;
+  // x - xhold far beyond any skin: this rank reports a move in the next distance check
+  double **xhold = neighbor->get_xhold();
+  if (xhold && atom->nlocal > 0) xhold[0][0] = atom->x[0][0] + 1.0e100;
+}
+
+void FixCellFailure::computed()
+{
+  epoch++;
+  if (!deferred) sync();
+}
+
+void FixCellFailure::sync()
+{
+  if (synced_epoch == epoch) return;
+  synced_epoch = epoch;
+  if (!flush()) return;
+  since_build = 1;
+  if (!deferred) next_reneighbor = update->ntimestep + 1;
+}
+
+FixCellFailure *FixCellFailure::synced(LAMMPS *lmp, const char *id)
+{
+  auto *fix = dynamic_cast<FixCellFailure *>(lmp->modify->get_fix_by_id(id));
+  if (fix) fix->sync();
+  return fix;
+}
+
+/* ----------------------------------------------------------------------
+   The distance check counted this build as dangerous if it came in the
+   first step it could (ago == max(every, delay)). A failure forced it; the
+   forced re-neighboring this replaces was never counted. Once per build,
+   when both failure fixes forced it.
+------------------------------------------------------------------------- */
+
+void FixCellFailure::forgive_build()
+{
+  if (neighbor->ago != std::max(neighbor->every, neighbor->delay) || neighbor->ndanger <= 0) return;
+  for (const auto *fix : modify->get_fix_list()) {
+    if (fix == this) break;
+    const auto *other = dynamic_cast<const FixCellFailure *>(fix);
+    if (other && other->forgiven_at == update->ntimestep) return;
+  }
+  neighbor->ndanger--;
+  forgiven_at = update->ntimestep;
+}

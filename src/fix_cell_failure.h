@@ -1,0 +1,56 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPDX-License-Identifier: GPL-2.0-or-later
+   cellmech: the common part of the internal fixes that keep the books of
+   wall and lamella failure (CELL_TETHER_BREAK, CELL_LAMELLA_BREAK): when
+   a failure found on one rank reaches the others. Not a style itself.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_CELL_FAILURE_H
+#define LMP_FIX_CELL_FAILURE_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixCellFailure : public Fix {
+ public:
+  FixCellFailure(class LAMMPS *, int, char **);
+
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void min_setup(int) override;
+  void pre_exchange() override;
+  void end_of_step() override;
+  void post_run() override;
+
+  // A style that can fail calls failed() for each failure it finds on this rank (after keeping
+  // it in the derived fix's pending list) and computed() at the end of every force computation,
+  // on every rank alike.
+  void failed();
+  void computed();
+  // Bring every rank's topology and counts up to date with the failures found so far. Collective:
+  // every rank calls it at the same point (the consumers of the counts -- compute_scalar, compute
+  // cell/props, fix cell/vtk -- are called so); without a force computation since the last
+  // call it returns at once.
+  void sync();
+  // the failure fix with this ID after a sync(), or null if there is none; collective
+  static FixCellFailure *synced(class LAMMPS *lmp, const char *id);
+
+ protected:
+  // gather the pending failures of all ranks and apply them on every rank; true if there were any
+  // anywhere. Collective.
+  virtual bool flush() = 0;
+
+ private:
+  int deferred;           // failures wait for the next neighbor build (see the .cpp)
+  bigint epoch;           // force computations so far (the same count on every rank)
+  bigint synced_epoch;    // epoch of the last sync()
+  int since_build;        // a sync() since the last neighbor build found failures
+  bigint forgiven_at;     // step whose build this fix took out of the dangerous-build count
+  void forgive_build();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
