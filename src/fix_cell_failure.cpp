@@ -41,6 +41,7 @@
 #include "fix_cell_failure.h"
 
 #include "atom.h"
+#include "error.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "output.h"
@@ -106,8 +107,15 @@ void FixCellFailure::failed()
 {
   if (!deferred) return;
   // x - xhold far beyond any skin: this rank reports a move in the next distance check
+  // (the rank that found a failure owns the atom that stores the element: nlocal > 0; the check
+  // keeps xhold from the build of this step's lists on)
   double **xhold = neighbor->get_xhold();
-  if (xhold && atom->nlocal > 0) xhold[0][0] = atom->x[0][0] + 1.0e100;
+  if (!xhold || atom->nlocal == 0)
+    error->one(FLERR,
+               "Fix {}: a failure cannot ask for the next neighbor build (no positions of the last "
+               "build kept on this rank); please report this",
+               id);
+  xhold[0][0] = atom->x[0][0] + 1.0e100;
 }
 
 void FixCellFailure::computed()
