@@ -130,6 +130,8 @@ int ComputeCellContacts::lock_length()
 void ComputeCellContacts::compute_array()
 {
   invoked_array = update->ntimestep;
+  // the failures found so far reach every rank's special lists and the debond table first
+  auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
 
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -266,7 +268,6 @@ void ComputeCellContacts::compute_array()
   }
 
   // debonded bonds: the per-cell-pair table of fix cell_debonded (cell i, cell j, bonds, area)
-  auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
   if (debonded && debonded->array_flag)
     for (int r = 0; r < debonded->size_array_rows; r++) {
       auto &g = global_row((int) debonded->compute_array(r, 0), (int) debonded->compute_array(r, 1));

@@ -191,6 +191,9 @@ int ComputeCellProps::lock_length()
 void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
+  // the failures found so far reach every rank's topology and counts first
+  auto *broken = FixCellFailure::synced(lmp, FixCellTetherBreak::ID);
+  auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
 
   cells.build(lmp);
   allocate(cells.size());
@@ -243,7 +246,6 @@ void ComputeCellProps::compute_array()
   }
 
   // broken tethers: each counted at both of its nodes by fix CELL_TETHER_BREAK
-  auto *broken = FixCellFailure::synced(lmp, FixCellTetherBreak::ID);
   if (broken)
     for (int i = 0; i < atom->nlocal; i++) {
       const int m = cells.slot(molecule[i]);
@@ -324,7 +326,6 @@ void ComputeCellProps::compute_array()
 
   // debonded lamella: the per-cell-pair table of fix cell_debonded (identical on every rank;
   // columns cell i, cell j, bonds, area, ...) counted for both cells of each pair
-  auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
   if (debonded && debonded->array_flag)
     for (int r = 0; r < debonded->size_array_rows; r++)
       for (int side = 0; side < 2; side++) {

@@ -32,8 +32,8 @@
 
    It needs the check in every step: neigh_modify every 1 delay 0 check yes
    (cellmech's inputs and LAMMPS's default) without 'include' or 'once'.
-   Other settings, and minimization, fall back to a gather after every
-   force computation and a forced re-neighboring (Fix::next_reneighbor),
+   Other settings, KOKKOS and minimization fall back to a gather after
+   every force computation and a forced re-neighboring (Fix::next_reneighbor),
    with the same rule. A build forced so in the step right after another
    is not a dangerous build, and does not count as one.
 ------------------------------------------------------------------------- */
@@ -69,8 +69,11 @@ int FixCellFailure::setmask()
 
 void FixCellFailure::init()
 {
-  deferred = update->whichflag == 1 && neighbor->dist_check && neighbor->every == 1 &&
-      neighbor->delay == 0 && !neighbor->build_once && !neighbor->includegroup;
+  // whichflag 0: an init of write_data, velocity, ... which a later 'run ... pre no' keeps; KOKKOS
+  // keeps the positions of the last build in a neighbor class of its own
+  deferred = update->whichflag != 2 && !lmp->kokkos && neighbor->dist_check &&
+      neighbor->every == 1 && neighbor->delay == 0 && !neighbor->build_once &&
+      !neighbor->includegroup;
   since_build = 0;
 }
 
@@ -149,7 +152,11 @@ FixCellFailure *FixCellFailure::synced(LAMMPS *lmp, const char *id)
 
 void FixCellFailure::forgive_build()
 {
-  if (neighbor->ago != std::max(neighbor->every, neighbor->delay) || neighbor->ndanger <= 0) return;
+  // a build forced another way (a restart step, another fix) did not pass the check: ago was not
+  // counted up in this step and nothing was added to the count
+  if (neighbor->ago != std::max(neighbor->every, neighbor->delay) || neighbor->ndanger <= 0 ||
+      update->ntimestep - neighbor->lastcall != neighbor->ago)
+    return;
   for (const auto *fix : modify->get_fix_list()) {
     if (fix == this) break;
     const auto *other = dynamic_cast<const FixCellFailure *>(fix);

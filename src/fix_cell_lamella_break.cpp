@@ -86,7 +86,8 @@ double FixCellLamellaBreak::compute_scalar()
 
 double FixCellLamellaBreak::compute_array(int i, int j)
 {
-  sync();
+  // no sync() here: LAMMPS reads size_array_rows before asking for the elements, and a sync would
+  // change the rows under it. The table is current at output steps and after compute_scalar.
   if (i < 0 || i >= (int) rows.size() || j < 0 || j >= NCOLS) return 0.0;
   return rows[i][j];
 }
