@@ -138,7 +138,9 @@ for mu in 1 10 100; do
     -var mu $mu -var trelax 100 -var every 50 -var out relax-soft-$mu.dat
 done
 
-# --- turgor series (Fig. 5): the stiff cell brought to P from 364 kPa, then compressed
+# --- turgor series (Fig. 5): the stiff cell brought to P from 364 kPa, then compressed, single level:
+# respa 5 holds at 300 kPa but not at 3 kPa (5.9% stiffer at 5% strain over 4 microstates;
+# docs/performance.md, "Multiple time stepping")
 for P in 300 30 3; do
   stage turgor-$P L turgor-$P "$INPUTS/in.turgor" -var restart inflated.restart -var turgor $P -var Lpset 1e-2 \
     -var nsettle 20000 -var settled turgor-$P.restart -var setout turgor-$P-settle.dat \
