@@ -55,7 +55,7 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixCellFailure::FixCellFailure(LAMMPS *_lmp, int narg, char **arg) :
-    Fix(_lmp, narg, arg), deferred(0), epoch(0), synced_epoch(0), since_build(0), forgiven_at(-1)
+    Fix(_lmp, narg, arg), deferred(0), stale(0), since_build(0), forgiven_at(-1)
 {
   nevery = 1;
   force_reneighbor = 1;
@@ -123,14 +123,14 @@ void FixCellFailure::failed()
 
 void FixCellFailure::computed()
 {
-  epoch++;
+  stale = 1;
   if (!deferred) sync();
 }
 
 void FixCellFailure::sync()
 {
-  if (synced_epoch == epoch) return;
-  synced_epoch = epoch;
+  if (!stale) return;
+  stale = 0;
   if (!flush()) return;
   since_build = 1;
   if (!deferred) next_reneighbor = update->ntimestep + 1;

@@ -43,11 +43,10 @@ class FixCellFailure : public Fix {
   virtual bool flush() = 0;
 
  private:
-  int deferred;           // failures wait for the next neighbor build (see the .cpp)
-  bigint epoch;           // force computations so far (the same count on every rank)
-  bigint synced_epoch;    // epoch of the last sync()
-  int since_build;        // a sync() since the last neighbor build found failures
-  bigint forgiven_at;     // step whose build this fix took out of the dangerous-build count
+  int deferred;          // failures wait for the next neighbor build (see the .cpp)
+  int stale;             // a force computation since the last sync() (alike on every rank)
+  int since_build;       // a sync() since the last neighbor build found failures
+  bigint forgiven_at;    // step whose build this fix took out of the dangerous-build count
   void forgive_build();
 };
 

@@ -162,17 +162,12 @@ bool FixCellLamellaBreak::flush()
     values.insert(values.end(), {e.area, (double) e.step, e.time});
   }
   pending.clear();
-  int nall = (int) tags.size() / 4;
-  if (comm->nprocs > 1) {
-    // the one collective of a build without debonds
-    const int nmine = nall;
-    MPI_Allreduce(&nmine, &nall, 1, MPI_INT, MPI_SUM, world);
-    if (nall == 0) return false;
-    tags = CellMech::allgather_list(tags, MPI_LMP_TAGINT, world);
-    values = CellMech::allgather_list(values, MPI_DOUBLE, world);
-  } else if (nall == 0)
-    return false;
+  // the one collective of a build without debonds
+  if (!CellMech::any_rank_has((int) tags.size(), world)) return false;
+  tags = CellMech::allgather_list(tags, MPI_LMP_TAGINT, world);
+  values = CellMech::allgather_list(values, MPI_DOUBLE, world);
 
+  const int nall = (int) tags.size() / 4;
   std::vector<Event> events;
   for (int k = 0; k < nall; k++)
     events.push_back({tags[4 * k], tags[4 * k + 1], tags[4 * k + 2], tags[4 * k + 3], values[3 * k],

@@ -37,7 +37,6 @@
 #include "atom.h"
 #include "atom_vec.h"
 #include "cell_mpi.h"
-#include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -127,15 +126,11 @@ bool FixCellTetherBreak::flush()
     triangles_flat.insert(triangles_flat.end(), t.begin(), t.end());
   pending_tethers.clear();
   pending_triangles.clear();
-  if (comm->nprocs > 1) {
-    // the one collective of a build without failures
-    int mine[2] = {(int) pairs_flat.size(), (int) triangles_flat.size()}, all[2];
-    MPI_Allreduce(mine, all, 2, MPI_INT, MPI_SUM, world);
-    if (all[0] == 0 && all[1] == 0) return false;
-    if (all[0]) pairs_flat = CellMech::allgather_list(pairs_flat, MPI_LMP_TAGINT, world);
-    if (all[1]) triangles_flat = CellMech::allgather_list(triangles_flat, MPI_LMP_TAGINT, world);
-  } else if (pairs_flat.empty() && triangles_flat.empty())
+  // the one collective of a build without failures
+  if (!CellMech::any_rank_has((int) (pairs_flat.size() + triangles_flat.size()), world))
     return false;
+  pairs_flat = CellMech::allgather_list(pairs_flat, MPI_LMP_TAGINT, world);
+  triangles_flat = CellMech::allgather_list(triangles_flat, MPI_LMP_TAGINT, world);
 
   std::vector<std::pair<tagint, tagint>> pairs;
   for (size_t k = 0; k + 1 < pairs_flat.size(); k += 2)
