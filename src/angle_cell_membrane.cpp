@@ -39,6 +39,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
@@ -51,7 +52,8 @@ static constexpr double MIN_AREA_RATIO = 1.0e-3;
 /* ---------------------------------------------------------------------- */
 
 AngleCellMembrane::AngleCellMembrane(LAMMPS *_lmp) :
-    Angle(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), breaker(nullptr)
+    Angle(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), wrinkle(nullptr), iref(-1),
+    breaker(nullptr)
 {
   born_matrix_enable = 0;
   writedata = 1;
@@ -65,6 +67,7 @@ AngleCellMembrane::~AngleCellMembrane()
     memory->destroy(t0);
     memory->destroy(gamma);
     memory->destroy(lamf);
+    memory->destroy(wrinkle);
   }
 }
 
@@ -113,8 +116,9 @@ void AngleCellMembrane::compute(int eflag, int vflag)
     }
 
     double fa[3], fc[3];
-    membrane_forces(G[type], t0[type], rest, s, fa, fc);
-    if (eflag) eangle = membrane_energy(G[type], t0[type], rest, s);
+    const bool relax = wrinkle[type] > 0.0;
+    membrane_forces(G[type], t0[type], rest, s, fa, fc, relax);
+    if (eflag) eangle = membrane_energy(G[type], t0[type], rest, s, relax);
 
     double fb[3] = {-fa[0] - fc[0], -fa[1] - fc[1], -fa[2] - fc[2]};
     const int node[3] = {ia, ib, ic};
@@ -185,7 +189,7 @@ bool AngleCellMembrane::triangle_forces(int type, int ia, int ib, int ic, double
   MembraneRest rest;
   MembraneStrain s;
   if (!shape(ia, ib, ic, rest, s, a, c) || !(s.J2 > 0.0)) return false;
-  membrane_forces(G[type], t0[type], rest, s, f[0], f[2]);
+  membrane_forces(G[type], t0[type], rest, s, f[0], f[2], wrinkle[type] > 0.0);
   for (int d = 0; d < 3; d++) f[1][d] = -f[0][d] - f[2][d];
   const int node[3] = {ia, ib, ic};
   double *fn[3] = {f[0], f[1], f[2]};
@@ -216,42 +220,61 @@ void AngleCellMembrane::allocate()
   memory->create(t0, n + 1, "angle:t0");
   memory->create(gamma, n + 1, "angle:gamma");
   memory->create(lamf, n + 1, "angle:lamf");
+  memory->create(wrinkle, n + 1, "angle:wrinkle");
   memory->create(setflag, n + 1, "angle:setflag");
   for (int i = 1; i <= n; i++) setflag[i] = 0;
 }
 
 /* ----------------------------------------------------------------------
-   angle_coeff N G t0 [gamma] [lamf value]
+   angle_coeff N G t0 [gamma] [lamf value] [wrinkle yes|no]
 ------------------------------------------------------------------------- */
 
 void AngleCellMembrane::coeff(int narg, char **arg)
 {
-  // the keyword sits after the optional gamma: N G t0 lamf X, or N G t0 gamma lamf X
-  const int ikey = (narg > 3 && strcmp(arg[3], "lamf") == 0) ? 3 : 4;
-  if (narg < 3 || (narg > ikey && narg != ikey + 2))
-    error->all(FLERR,
-               "Angle_coeff cell/membrane: expected 'angle_coeff N G t0 [gamma] [lamf value]' "
-               "(shear modulus, wall thickness, edge damping, critical stretch), got {} arguments",
-               narg);
-  if (narg == ikey + 2 && strcmp(arg[ikey], "lamf") != 0)
-    error->all(FLERR, "Angle_coeff cell/membrane: unknown keyword '{}', expected 'lamf'",
-               arg[ikey]);
+  static const char *usage = "expected 'angle_coeff N G t0 [gamma] [lamf value] [wrinkle yes|no]' "
+                             "(shear modulus, wall thickness, edge damping, critical stretch, "
+                             "tension-field theory)";
+  if (narg < 3)
+    error->all(FLERR, "Angle_coeff cell/membrane: {}, got {} arguments", usage, narg);
+  // the optional gamma is the one positional argument after t0 that is not a keyword
+  int iarg = 3;
+  const auto keyword = [&](int i) {
+    return strcmp(arg[i], "lamf") == 0 || strcmp(arg[i], "wrinkle") == 0;
+  };
+  if (iarg < narg && !keyword(iarg)) iarg++;
+  const int ngamma = iarg - 3;
+  double lamf_one = 0.0, wrinkle_one = 0.0;
+  for (; iarg < narg; iarg += 2) {
+    if (!keyword(iarg))
+      error->all(FLERR, "Angle_coeff cell/membrane: unknown keyword '{}', expected 'lamf' or "
+                 "'wrinkle'", arg[iarg]);
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Angle_coeff cell/membrane: keyword '{}' needs a value; {}", arg[iarg],
+                 usage);
+    if (strcmp(arg[iarg], "lamf") == 0) {
+      lamf_one = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(lamf_one > 1.0) || !std::isfinite(lamf_one))
+        error->all(FLERR,
+                   "Angle_coeff cell/membrane: critical stretch lamf must be > 1 (a triangle fails "
+                   "when its largest principal stretch passes lamf), got {}",
+                   arg[iarg + 1]);
+    } else {
+      const std::string v = arg[iarg + 1];
+      if (v != "yes" && v != "no")
+        error->all(FLERR,
+                   "Angle_coeff cell/membrane: wrinkle must be 'yes' (tension-field theory, Eq. "
+                   "M3) or 'no' (the full sheet, Eq. M1), got '{}'",
+                   v);
+      wrinkle_one = v == "yes" ? 1.0 : 0.0;
+    }
+  }
   if (!allocated) allocate();
 
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
   const double G_one = utils::numeric(FLERR, arg[1], false, lmp);
   const double t0_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double gamma_one = ikey == 4 && narg > 3 ? utils::numeric(FLERR, arg[3], false, lmp) : 0.0;
-  double lamf_one = 0.0;
-  if (narg == ikey + 2) {
-    lamf_one = utils::numeric(FLERR, arg[ikey + 1], false, lmp);
-    if (!(lamf_one > 1.0) || !std::isfinite(lamf_one))
-      error->all(FLERR,
-                 "Angle_coeff cell/membrane: critical stretch lamf must be > 1 (a triangle fails "
-                 "when its largest principal stretch passes lamf), got {}",
-                 arg[ikey + 1]);
-  }
+  const double gamma_one = ngamma ? utils::numeric(FLERR, arg[3], false, lmp) : 0.0;
   if (!(G_one > 0.0) || !std::isfinite(G_one))
     error->all(FLERR, "Angle_coeff cell/membrane: shear modulus G must be > 0, got {}", arg[1]);
   if (!(t0_one > 0.0) || !std::isfinite(t0_one))
@@ -269,6 +292,7 @@ void AngleCellMembrane::coeff(int narg, char **arg)
     t0[i] = t0_one;
     gamma[i] = gamma_one;
     lamf[i] = lamf_one;
+    wrinkle[i] = wrinkle_one;
     setflag[i] = 1;
     count++;
   }
@@ -329,24 +353,24 @@ double AngleCellMembrane::equilibrium_angle(int /*i*/)
 
 void AngleCellMembrane::write_restart(FILE *fp)
 {
-  CellMech::write_type_arrays(fp, atom->nangletypes, {G, t0, gamma, lamf});
+  CellMech::write_type_arrays(fp, atom->nangletypes, {G, t0, gamma, lamf, wrinkle});
 }
 
 void AngleCellMembrane::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->nangletypes;
-  CellMech::read_type_arrays(fp, n, {G, t0, gamma, lamf}, comm->me, world, error);
+  CellMech::read_type_arrays(fp, n, {G, t0, gamma, lamf, wrinkle}, comm->me, world, error);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
 void AngleCellMembrane::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->nangletypes; i++) {
-    if (lamf[i] > 0.0)
-      fprintf(fp, "%d %.15g %.15g %.15g lamf %.15g\n", i, G[i], t0[i], gamma[i], lamf[i]);
-    else
-      fprintf(fp, "%d %.15g %.15g %.15g\n", i, G[i], t0[i], gamma[i]);
+    fprintf(fp, "%d %.15g %.15g %.15g", i, G[i], t0[i], gamma[i]);
+    if (lamf[i] > 0.0) fprintf(fp, " lamf %.15g", lamf[i]);
+    if (wrinkle[i] > 0.0) fprintf(fp, " wrinkle yes");
+    fprintf(fp, "\n");
   }
 }
 
@@ -358,7 +382,7 @@ double AngleCellMembrane::single(int type, int i1, int i2, int i3)
   MembraneRest rest;
   MembraneStrain s;
   if (!shape(i1, i2, i3, rest, s, a, c) || !(s.J2 > 0.0)) return 0.0;
-  return membrane_energy(G[type], t0[type], rest, s);
+  return membrane_energy(G[type], t0[type], rest, s, wrinkle[type] > 0.0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -370,5 +394,6 @@ void *AngleCellMembrane::extract(const char *str, int &dim)
   if (strcmp(str, "t0") == 0) return (void *) t0;
   if (strcmp(str, "gamma") == 0) return (void *) gamma;
   if (strcmp(str, "lamf") == 0) return (void *) lamf;
+  if (strcmp(str, "wrinkle") == 0) return (void *) wrinkle;
   return nullptr;
 }

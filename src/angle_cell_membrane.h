@@ -48,6 +48,7 @@ class AngleCellMembrane : public Angle {
 
  protected:
   double *G, *t0, *gamma, *lamf;
+  double *wrinkle;    // 1: tension-field theory (Eq. M3), 0: the full sheet (Eq. M1)
   int iref;         // index of the reference-position array d2_cellref in atom->darray
   // the bookkeeping of failures (fix CELL_TETHER_BREAK) when some angle type has a critical
   // stretch lamf, else null

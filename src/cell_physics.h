@@ -604,24 +604,88 @@ inline void membrane_strain(const MembraneRest &rest, const double a[3], const d
   s.J2 = s.C2[0][0] * s.C2[1][1] - s.C2[0][1] * s.C2[1][0];
 }
 
-// Energy of the triangle (Eq. M1). I1 - 3 is written as (tr C2 - 2) + (1/J2 - 1) ... and the
-// sum of both is formed from the deviations so that it keeps its digits near rest.
-inline double membrane_energy(double G, double t0, const MembraneRest &rest,
-                              const MembraneStrain &s)
+/* Tension-field theory (Eq. M3): a wall much thinner than a triangle wrinkles at a scale below the
+   mesh rather than carry compression, so with `wrinkle yes` the element stores Pipkin's relaxed
+   energy (Pipkin, IMA J. Appl. Math. 36, 85 (1986)) of the sheet, with principal stretches
+   lam1 >= lam2:
+     taut      lam2 >= lam1^-1/2:          W of Eq. M1
+     wrinkled  lam1 > 1, lam2 < lam1^-1/2: W = (G t0 A0 / 2) (lam1^2 + 2 / lam1 - 3)   (Eq. M3)
+     slack     lam1 <= 1:                  W = 0
+   The wrinkled energy is the sheet's in uniaxial tension with free sides, where the minor tension
+   vanishes (lam2 = lam1^-1/2), so the stress is continuous across every boundary: a tension field
+   along the major direction v only. This is the membrane that the quasistatic reference
+   (tools/membrane.py) solves, whose contact disc lies slack on the plate. */
+
+// The response of the triangle as P = G t0 A0 F K (first Piola stress times volume, K a symmetric
+// 2x2 in the reference frame) and W = G t0 A0 dev / 2. Without relax, K = I - C2^-1 / det C2
+// (Eq. M2) and dev = I1 - 3 (Eq. M1), formed from the deviations so that it keeps its digits near
+// rest; with relax, Eq. M3.
+inline void membrane_response(const MembraneStrain &s, bool relax, double K[2][2], double &dev)
 {
-  const double dev = (s.C2[0][0] - 1.0) + (s.C2[1][1] - 1.0) + (1.0 - s.J2) / s.J2;
+  if (relax) {
+    const double tr = s.C2[0][0] + s.C2[1][1];
+    const double dif = s.C2[0][0] - s.C2[1][1];
+    const double off = s.C2[0][1];
+    const double root = std::sqrt(0.25 * dif * dif + off * off);
+    const double e1 = 0.5 * tr + root;    // lam1^2
+    const double lam1 = std::sqrt(e1);
+    if (!(lam1 > 1.0)) {    // slack
+      K[0][0] = K[0][1] = K[1][0] = K[1][1] = 0.0;
+      dev = 0.0;
+      return;
+    }
+    // lam2^2 lam1 < 1 (with lam2^2 = J2 / e1): wrinkled
+    if (s.J2 < lam1) {
+      // unit eigenvector of C2 for e1; of the two equivalent forms the longer one keeps its digits
+      double v0 = off, v1 = e1 - s.C2[0][0];
+      const double w0 = e1 - s.C2[1][1], w1 = off;
+      if (w0 * w0 + w1 * w1 > v0 * v0 + v1 * v1) {
+        v0 = w0;
+        v1 = w1;
+      }
+      const double vn = std::sqrt(v0 * v0 + v1 * v1);
+      if (vn > 0.0) {
+        v0 /= vn;
+        v1 /= vn;
+      } else {    // e1 = e2 cannot be wrinkled (lam1 > 1 >= lam2); kept for safety
+        v0 = 1.0;
+        v1 = 0.0;
+      }
+      // dW/dC2 = (G t0 A0 / 2) (1 - lam1^-3) v v^T, and P = 2 F dW/dC2
+      const double k = 1.0 - 1.0 / (e1 * lam1);
+      K[0][0] = k * v0 * v0;
+      K[0][1] = K[1][0] = k * v0 * v1;
+      K[1][1] = k * v1 * v1;
+      dev = (e1 - 1.0) + 2.0 * (1.0 - lam1) / lam1;
+      return;
+    }
+  }
+  // C2^-1 / det C2 = adj(C2) / J2^2
+  const double inv = 1.0 / (s.J2 * s.J2);
+  K[0][0] = 1.0 - s.C2[1][1] * inv;
+  K[0][1] = s.C2[0][1] * inv;
+  K[1][0] = s.C2[1][0] * inv;
+  K[1][1] = 1.0 - s.C2[0][0] * inv;
+  dev = (s.C2[0][0] - 1.0) + (s.C2[1][1] - 1.0) + (1.0 - s.J2) / s.J2;
+}
+
+// Energy of the triangle (Eq. M1, or Eq. M3 with relax).
+inline double membrane_energy(double G, double t0, const MembraneRest &rest,
+                              const MembraneStrain &s, bool relax = false)
+{
+  double K[2][2], dev;
+  membrane_response(s, relax, K, dev);
   return 0.5 * G * t0 * rest.area * dev;
 }
 
-// Forces on the two outer nodes of the triangle (Eq. M2): fa = -dW/da, fc = -dW/dc; the central
-// node takes -(fa + fc). Needs J2 > 0 (a triangle with area).
+// Forces on the two outer nodes of the triangle (Eq. M2, or the gradient of Eq. M3 with relax):
+// fa = -dW/da, fc = -dW/dc; the central node takes -(fa + fc). Needs J2 > 0 (a triangle with
+// area).
 inline void membrane_forces(double G, double t0, const MembraneRest &rest, const MembraneStrain &s,
-                            double fa[3], double fc[3])
+                            double fa[3], double fc[3], bool relax = false)
 {
-  // C2^-1 / det C2 = adj(C2) / J2^2
-  const double inv = 1.0 / (s.J2 * s.J2);
-  const double K[2][2] = {{1.0 - s.C2[1][1] * inv, s.C2[0][1] * inv},
-                          {s.C2[1][0] * inv, 1.0 - s.C2[0][0] * inv}};
+  double K[2][2], dev;
+  membrane_response(s, relax, K, dev);
   const double k = G * t0 * rest.area;
   for (int d = 0; d < 3; d++) {
     // P = k F K (first Piola stress times volume), then dW/d[a c] = P D^-T

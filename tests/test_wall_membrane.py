@@ -15,8 +15,13 @@ forms is in tests/unit/test_physics.cpp (MembraneElement).
    potential energy at dt = 0.5 ns; asserted below 1e-3 as a guard against a gross error.
 3. The same run on 1 and 2 ranks gives the same positions (to 1e-9 of the wall size), and a
    restart in the middle continues it exactly.
-4. Bad input: a negative modulus, too few arguments and a wall without reference positions each
-   stop with an error naming the command.
+4. Bad input: a negative modulus, too few arguments, a wall without reference positions and a
+   wrinkle value other than yes/no each stop with an error naming the command.
+5. Tension-field theory (angle_coeff ... wrinkle yes, Eq. M3): the wall scaled by (1.08, 1.0, 0.93)
+   along x, y, z has triangles taut, wrinkled and slack; its energy equals Eq. M3 summed over the
+   triangles by this script from numpy's principal stretches (1e-10 relative), and is below the
+   full sheet's. Scaled uniformly by 0.95 every triangle is slack: no energy and no virial. The
+   setting survives write_data and a restart (the same energy after reading either back).
 """
 import math
 import os
@@ -50,7 +55,8 @@ timestep        {dt}
 
 # reference area of the wall (sum of the triangles' areas at the reference positions): from
 # the data file, independently of the style
-def reference_area(path):
+def wall_triangles(path):
+    """(reference positions by atom id, triangles a-b-c) of a data file."""
     text = open(path).read().split("\n")
     ref, tri = {}, []
     sec = None
@@ -67,10 +73,41 @@ def reference_area(path):
         elif sec == "Angles":
             w = s.split()
             tri.append((int(w[2]), int(w[3]), int(w[4])))
+    return ref, tri
+
+
+def reference_area(path):
+    ref, tri = wall_triangles(path)
     area = 0.0
     for a, b, c in tri:
         area += 0.5 * np.linalg.norm(np.cross(ref[a] - ref[b], ref[c] - ref[b]))
     return area, len(tri)
+
+
+def tension_field_energy(ref, tri, x):
+    """Eq. M3 summed over the triangles, computed here from the principal stretches (numpy's
+    eigenvalues of C2), independently of the style: taut W(l1, l2), wrinkled W(l1, l1^-1/2),
+    slack 0; also the number of triangles in each state."""
+    E, states = 0.0, [0, 0, 0]
+    for a, b, c in tri:
+        A, C = ref[a] - ref[b], ref[c] - ref[b]
+        e1 = A / np.linalg.norm(A)
+        n = np.cross(A, C)
+        e2 = np.cross(n / np.linalg.norm(n), e1)
+        D = np.array([[A @ e1, C @ e1], [A @ e2, C @ e2]])
+        F = np.column_stack([x[a] - x[b], x[c] - x[b]]) @ np.linalg.inv(D)
+        ev = np.linalg.eigvalsh(F.T @ F)
+        l1, l2 = math.sqrt(ev[1]), math.sqrt(ev[0])
+        A0 = 0.5 * np.linalg.norm(n)
+        if l1 <= 1.0:
+            states[2] += 1
+        elif l2 < l1 ** -0.5:
+            E += 0.5 * G * T0 * A0 * (l1 * l1 + 2.0 / l1 - 3.0)
+            states[1] += 1
+        else:
+            E += 0.5 * G * T0 * A0 * (l1 * l1 + l2 * l2 + 1.0 / (l1 * l1 * l2 * l2) - 3.0)
+            states[0] += 1
+    return E, states
 
 
 def main():
@@ -171,6 +208,9 @@ write_dump      all custom restart.dump id x y z vx vy vz modify sort id format 
 
     # 4. bad input
     bad = {
+        "wrinkle not yes or no": (SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
+            f"angle_coeff     1 {G} {T0} 0.0", f"angle_coeff     1 {G} {T0} 0.0 wrinkle maybe"),
+            "wrinkle must be 'yes'"),
         "negative modulus": (SETUP.format(G=-1.0, t0=T0, gamma=0.0, dt=0.001),
                              "shear modulus G must be > 0"),
         "too few arguments": (SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
@@ -185,6 +225,85 @@ write_dump      all custom restart.dump id x y z vx vy vz modify sort id format 
         print(f"{name}: rc {rc}, {msg[-1] if msg else 'no error'}")
         T.check(f"bad input ({name}) is refused with a clear error",
                 rc != 0 and any(expect in l for l in msg), msg[-1] if msg else "no error")
+
+    # 5. tension-field theory
+    ref, tri = wall_triangles(os.path.join(d, "cell.data"))
+    wr = SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
+        f"angle_coeff     1 {G} {T0} 0.0", f"angle_coeff     1 {G} {T0} 0.0 wrinkle yes")
+    scale = """
+variable        cx equal xcm(all,x)
+variable        cy equal xcm(all,y)
+variable        cz equal xcm(all,z)
+variable        sx atom v_cx+{a}*(x-v_cx)
+variable        sy atom v_cy+{b}*(y-v_cy)
+variable        sz atom v_cz+{c}*(z-v_cz)
+set             group all x v_sx y v_sy z v_sz
+compute         vir all pressure NULL virial
+variable        xf equal c_vir*3*vol
+thermo_style    custom step eangle v_xf
+thermo_modify   format float %.17g
+run             0
+print           "SCALED $(eangle:%.17g) $(v_xf:%.17g)"
+"""
+    def scaled(inp, tag):
+        _, log = T.lmp(inp, cwd=d, log=f"log.{tag}")
+        line = [l for l in log.splitlines() if l.startswith("SCALED")][-1].split()
+        return float(line[1]), float(line[2])
+    E, _ = scaled(wr + scale.format(a=1.08, b=1.0, c=0.93) + """
+write_dump      all custom wrinkled.dump id x y z modify sort id format float %.17g
+write_data      wrinkled.data
+write_restart   wrinkled.restart
+""", "wrinkle-aniso")
+    Efull, _ = scaled(SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001)
+                      + scale.format(a=1.08, b=1.0, c=0.93), "full-aniso")
+    dmp = np.loadtxt(os.path.join(d, "wrinkled.dump"), skiprows=9)
+    x = {int(r[0]): r[1:4] for r in dmp}
+    Eexp, states = tension_field_energy(ref, tri, x)
+    eE = abs(E / Eexp - 1)
+    print(f"wrinkle yes, wall scaled (1.08, 1, 0.93): {states[0]} taut, {states[1]} wrinkled, "
+          f"{states[2]} slack triangles; energy {E:.10g}, Eq. M3 here {Eexp:.10g} (rel. error "
+          f"{eE:.1e}); the full sheet {Efull:.10g}")
+    T.check("the scaled wall has taut, wrinkled and slack triangles", min(states) > 0, states)
+    T.check("tension-field energy of the wall equals Eq. M3 summed independently", eE < 1e-10,
+            f"{eE:.1e}")
+    T.check("the tension-field wall stores less than the full sheet", E < Efull, f"{E:.6g} {Efull:.6g}")
+    E95, xf95 = scaled(wr + scale.format(a=0.95, b=0.95, c=0.95), "wrinkle-0.95")
+    print(f"wrinkle yes, wall scaled by 0.95: energy {E95:g}, sum x.f {xf95:g}")
+    T.check("a wall shrunk in every direction is slack: no energy, no virial",
+            E95 == 0.0 and xf95 == 0.0, f"{E95:g} {xf95:g}")
+    text = open(os.path.join(d, "wrinkled.data")).read()
+    coeffs = text.split("Angle Coeffs")[1].split("\n\n")[1].strip()
+    print(f"write_data Angle Coeffs: {coeffs}")
+    T.check("write_data keeps wrinkle yes", coeffs.endswith("wrinkle yes"), coeffs)
+    back = {}
+    for how, head in (("data", """
+units           micro
+atom_style      molecular
+atom_modify     map array
+boundary        f f f
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+bond_style      zero
+angle_style     cell/membrane
+pair_style      zero 1.0
+read_data       wrinkled.data fix cell NULL cell
+pair_coeff      * *
+"""), ("restart", """
+units           micro
+read_restart    wrinkled.restart
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+pair_coeff      * *
+""")):
+        _, log = T.lmp(head + """
+special_bonds   lj 0 1 1
+comm_modify     cutoff 8.0
+thermo_style    custom step eangle
+run             0
+print           "BACK $(eangle:%.17g)"
+""", cwd=d, log=f"log.wrinkle-{how}")
+        back[how] = float([l for l in log.splitlines() if l.startswith("BACK")][-1].split()[1])
+        print(f"read back from the {how} file: energy {back[how]:.10g}")
+        T.check(f"the {how} file keeps the tension-field wall", abs(back[how] / E - 1) < 1e-12,
+                f"{back[how]:.10g} vs {E:.10g}")
     T.finish()
 
 

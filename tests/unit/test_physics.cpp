@@ -920,7 +920,7 @@ Tri make(const double F2[2][2])
   return t;
 }
 
-void evaluate(const Tri &t, double &E, double f[3][3], double &area)
+void evaluate(const Tri &t, double &E, double f[3][3], double &area, bool relax = false)
 {
   double A[3], C[3], a[3], c[3];
   for (int d = 0; d < 3; d++) {
@@ -933,8 +933,8 @@ void evaluate(const Tri &t, double &E, double f[3][3], double &area)
   ASSERT_TRUE(membrane_rest(A, C, rest));
   MembraneStrain s;
   membrane_strain(rest, a, c, s);
-  E = membrane_energy(G, T0, rest, s);
-  membrane_forces(G, T0, rest, s, f[0], f[2]);
+  E = membrane_energy(G, T0, rest, s, relax);
+  membrane_forces(G, T0, rest, s, f[0], f[2], relax);
   for (int d = 0; d < 3; d++) f[1][d] = -f[0][d] - f[2][d];
   const double n[3] = {a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
   area = 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -1092,6 +1092,127 @@ TEST(MembraneElement, PrincipalStretches)
   std::printf("principal stretches %.15g %.15g\n", l1, l2);
   EXPECT_NEAR(l1, 1.3, 1e-13);
   EXPECT_NEAR(l2, 0.9, 1e-13);
+}
+
+/* ---------------------------------------------------------------------
+   Tension-field membrane (Eq. M3, angle_coeff ... wrinkle yes): Pipkin's
+   relaxed energy. Taut states are those of Eq. M1; a wrinkled one carries
+   the uniaxial tension of its major stretch only; a slack one nothing.
+------------------------------------------------------------------------ */
+
+TEST(MembraneElement, TensionFieldClosedForms)
+{
+  const double Gt = G * T0;
+  const double g = 0.4, l1s = 0.5 * g + std::sqrt(1.0 + 0.25 * g * g);    // simple shear's lam1
+  struct Case { const char *name; double F2[2][2]; double l1, l2; bool wrinkled; };
+  const Case cases[] = {
+      {"equibiaxial 1.1 (taut)", {{1.1, 0}, {0, 1.1}}, 1.1, 1.1, false},
+      {"sides fixed 1.3 (taut)", {{1.3, 0}, {0, 1}}, 1.3, 1.0, false},
+      {"stretch 1.3, width 0.8 (wrinkled)", {{1.3, 0}, {0, 0.8}}, 1.3, 0.8, true},
+      {"stretch 1.05, width 0.5 (wrinkled)", {{1.05, 0}, {0, 0.5}}, 1.05, 0.5, true},
+      {"simple shear 0.4 (wrinkled)", {{1, g}, {0, 1}}, l1s, 1 / l1s, true},
+  };
+  for (const auto &k : cases) {
+    Tri t = make(k.F2);
+    double E, f[3][3], area, T[2][2], Ef, ff[3][3];
+    evaluate(t, E, f, area, true);
+    evaluate(t, Ef, ff, area, false);
+    tension(t, f, area, T);
+    const double l1 = k.l1, l2 = k.l2;
+    double Wexp, Tmaj;    // energy per G t0 A0 / 2, and the tension along the major stretch
+    if (k.wrinkled) {
+      Wexp = l1 * l1 + 2 / l1 - 3;
+      Tmaj = Gt * (l1 - 1 / (l1 * l1)) / l2;    // dW/dlam1 per reference width, per current width
+    } else {    // Eq. M1, whose tensions ClosedForms checks
+      Wexp = l1 * l1 + l2 * l2 + 1 / (l1 * l1 * l2 * l2) - 3;
+      Tmaj = 0;
+    }
+    // the principal tensions of T (symmetric 2x2)
+    const double tr = T[0][0] + T[1][1], dif = T[0][0] - T[1][1];
+    const double root = std::sqrt(0.25 * dif * dif + T[0][1] * T[1][0]);
+    const double Tmax = 0.5 * tr + root, Tmin = 0.5 * tr - root;
+    const double Wc = 0.5 * Gt * A0() * Wexp;
+    std::printf("%-36s W %.10g (closed %.10g, full sheet %.10g)  T_major %.8g  T_minor %.3g\n",
+                k.name, E, Wc, Ef, Tmax, Tmin);
+    EXPECT_LT(std::fabs(E / Wc - 1), 1e-12) << k.name;
+    if (k.wrinkled) {
+      EXPECT_LT(std::fabs(Tmax / Tmaj - 1), 1e-12) << k.name;
+      EXPECT_LT(std::fabs(Tmin), 1e-12 * Gt) << k.name;
+      EXPECT_LT(E, Ef) << k.name;    // relaxing never costs: the wrinkled sheet is softer
+    } else {
+      EXPECT_EQ(E, Ef) << k.name;
+      for (int n = 0; n < 3; n++)
+        for (int d = 0; d < 3; d++) EXPECT_EQ(f[n][d], ff[n][d]) << k.name;
+    }
+  }
+}
+
+TEST(MembraneElement, TensionFieldSlackAndContinuity)
+{
+  // slack: shortened in every direction, nothing stored and no force
+  const double S[2][2] = {{0.95, 0.02}, {0.0, 0.7}};
+  Tri t = make(S);
+  double E, f[3][3], area;
+  evaluate(t, E, f, area, true);
+  double fm = 0;
+  for (auto &r : f) for (double v : r) fm = std::max(fm, std::fabs(v));
+  std::printf("slack: energy %g, largest force %g\n", E, fm);
+  EXPECT_EQ(E, 0.0);
+  EXPECT_EQ(fm, 0.0);
+  // across the taut/wrinkled boundary lam2 = lam1^-1/2 and the slack one lam1 = 1, energy and
+  // forces are continuous: a step of 1e-9 in the stretch changes them by O(1e-9)
+  const double h = 1e-9, w = 1 / std::sqrt(1.2);
+  const double pairs[2][2][2][2] = {
+      {{{1 - h, 0}, {0, 0.9}}, {{1 + h, 0}, {0, 0.9}}},    // slack | wrinkled at lam1 = 1
+      {{{1.2, 0}, {0, w - h}}, {{1.2, 0}, {0, w + h}}},    // wrinkled | taut at lam1 = 1.2
+  };
+  for (const auto &Fab : pairs) {
+    const auto &Fa = Fab[0], &Fb = Fab[1];
+    const double l1 = Fa[0][0];
+    double Ea, fa[3][3], Eb, fb[3][3];
+    evaluate(make(Fa), Ea, fa, area, true);
+    evaluate(make(Fb), Eb, fb, area, true);
+    double df = 0, fs = G * T0 * std::sqrt(A0());
+    for (int n = 0; n < 3; n++)
+      for (int d = 0; d < 3; d++) df = std::max(df, std::fabs(fa[n][d] - fb[n][d]));
+    std::printf("boundary at lam1 = %g: energy jump %.3g, force jump %.3g (scale %.3g)\n", l1,
+                std::fabs(Ea - Eb), df, fs);
+    EXPECT_LT(std::fabs(Ea - Eb), 1e-8 * G * T0 * A0());
+    EXPECT_LT(df, 1e-7 * fs);
+  }
+}
+
+TEST(MembraneElement, TensionFieldForcesAreMinusEnergyGradient)
+{
+  // one wrinkled and one taut state, turned and sheared, out of the plane
+  const double Fw[2][2] = {{1.25, 0.15}, {-0.05, 0.7}};
+  const double Ft[2][2] = {{1.13, 0.05}, {-0.02, 1.08}};
+  for (const auto *F2 : {Fw, Ft}) {
+    const bool wrinkled = F2 == Fw;
+    Tri t = make(F2);
+    t.x[2][2] += 0.1;
+    double E, f[3][3], area, Efull, ff[3][3];
+    evaluate(t, E, f, area, true);
+    evaluate(t, Efull, ff, area, false);
+    double worst = 0, fmax = 0;
+    for (int n = 0; n < 3; n++) for (int d = 0; d < 3; d++) fmax = std::max(fmax, std::fabs(f[n][d]));
+    for (int n = 0; n < 3; n++)
+      for (int d = 0; d < 3; d++) {
+        const double h = 1e-5;
+        Tri p = t, m = t;
+        p.x[n][d] += h;
+        m.x[n][d] -= h;
+        double Ep, Em, fp[3][3], ap;
+        evaluate(p, Ep, fp, ap, true);
+        evaluate(m, Em, fp, ap, true);
+        worst = std::max(worst, std::fabs(-(Ep - Em) / (2 * h) - f[n][d]) / fmax);
+      }
+    std::printf("%s state: energy %.10g (full sheet %.10g), largest difference / largest force "
+                "%.2e\n", wrinkled ? "wrinkled" : "taut", E, Efull, worst);
+    if (wrinkled) EXPECT_LT(E, Efull);
+    else EXPECT_EQ(E, Efull);
+    EXPECT_LT(worst, 1e-8);
+  }
 }
 
 /* ---------------------------------------------------------------------
