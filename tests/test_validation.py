@@ -105,6 +105,33 @@ def main():
     # 0.5%, the swing kept within 5%): the rows that carry a tolerance are held to it
     for r in [x for x in cases["8"]["rows"] if x["tolerance"] is not None]:
         within(f"8: {r['name']}", r, r["tolerance"])
+
+    # a variant study (VARS): its -var settings reach every run and the report says so; it never
+    # writes the default (committed) report; malformed entries are refused
+    driver = [sys.executable, "-m", "cellmech.validation.driver"]
+    for vars_, extra, expect in (("wrinkle", {}, "expected entries name=value"),
+                                 ("wall=bending", {}, "'wall' is set by the suite"),
+                                 ("wrinkle=yes", {"OUT": None, "WORK": None}, "its own OUT and WORK")):
+        e = dict(env, VARS=vars_, CASES="1", **{k: v for k, v in extra.items() if v})
+        for k, v in extra.items():
+            if v is None:
+                e.pop(k, None)
+        p = subprocess.run(driver, env=e, capture_output=True, text=True)
+        print(f"VARS={vars_!r}: rc {p.returncode}, {p.stderr.strip()[-200:]}")
+        T.check(f"VARS={vars_!r} is refused with a message", p.returncode != 0 and expect in p.stderr,
+                p.stderr.strip()[-200:])
+    dv = os.path.join(d, "variant")
+    e = dict(env, VARS="wrinkle=no", CASES="1", WALL="membrane", OUT=dv, WORK=os.path.join(dv, "work"))
+    p = subprocess.run(driver, env=e, capture_output=True, text=True)
+    T.check("a variant study runs", p.returncode == 0, p.stderr[-500:])
+    stamps = [json.load(open(os.path.join(dv, "work", f))) for f in os.listdir(os.path.join(dv, "work"))
+              if f.startswith("log.") and f.endswith(".stamp")]
+    print(f"variant runs: {len(stamps)}, -var wrinkle in each: {[s.get('wrinkle') for s in stamps]}")
+    T.check("every run of the variant study carries its -var", stamps and all(s.get("wrinkle") == "no" for s in stamps))
+    head = open(os.path.join(dv, "validation.md")).read().split("\n")[2]
+    T.check("the variant's report names its VARS", 'VARS="wrinkle=no"' in head, head[:200])
+    T.check("the variant's summary names its VARS",
+            json.load(open(os.path.join(dv, "validation-summary.json"))).get("vars") == "wrinkle=no")
     T.finish()
 
 

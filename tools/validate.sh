@@ -8,6 +8,7 @@
 #   RES=study             as paper, report in results/validation-study/
 #   RES=fine              10242 + 14000 (hours on one core)     -> results/validation-fine/
 # OUT=folder puts the report elsewhere; CASES="1,3" runs some cases; NP=2 uses 2 MPI ranks per run.
+# VARS="wrinkle=yes f0=1e5" (with its own OUT and WORK) passes -var settings to every run: a variant study.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # on a fresh machine, set up first (LAMMPS and the plugin); later runs reuse the build

@@ -64,8 +64,10 @@ def log_wall_time(text):
 
 
 class Runner:
-    def __init__(self, work, nprocs=1, log=print, wall="tether"):
+    def __init__(self, work, nprocs=1, log=print, wall="tether", variant=None):
         self.work = work
+        # -var settings of a variant study (VARS), over those of every run
+        self.variant = dict(variant or {})
         self.nprocs = nprocs
         self.wall = wall          # the default wall of the runs (-var wall, cell-wall.lmp)
         self.lmp_exe = os.environ.get("LMP", "lmp")
@@ -117,6 +119,7 @@ class Runner:
         wall = variables.pop("wall", self.wall)
         if wall != "tether":
             variables["wall"] = wall
+        variables.update(self.variant)
         stamp = self.path(log + ".stamp")
         key = dict(script=script, nprocs=self.nprocs, code=code_version(),
                    **{k: str(v) for k, v in variables.items()})

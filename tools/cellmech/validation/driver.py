@@ -16,6 +16,9 @@ Environment:
          docs/validation-WALL). Cases 3 and 4 (Young-Laplace, sheet) run the tethers and the
          membrane side by side whatever WALL is; the report of either wall at RES=paper sets the
          other wall's committed report beside it (section "The walls side by side").
+  VARS   a variant study: "name=value ..." passed as -var to every LAMMPS run, over the
+         model's own values (e.g. VARS="wrinkle=yes f0=1e5"); needs its own OUT and WORK, so
+         that it never writes over a committed report
 """
 import json
 import os
@@ -27,6 +30,19 @@ import traceback
 from ..params import RES_LEVEL, ROOT, WALLS
 
 
+def parse_vars(text):
+    """{name: value} of VARS ("name=value ..."); exits with a message on a malformed entry."""
+    out = {}
+    for item in text.split():
+        name, eq, value = item.partition("=")
+        if not eq or not name.isidentifier() or not value:
+            sys.exit(f"validate: VARS: expected entries name=value separated by blanks, got '{item}'")
+        if name in ("wall", "dir"):
+            sys.exit(f"validate: VARS: '{name}' is set by the suite (use WALL for the wall)")
+        out[name] = value
+    return out
+
+
 def main():
     res = os.environ.get("RES", "coarse")
     wall = os.environ.get("WALL", "tether")
@@ -36,6 +52,10 @@ def main():
     default_out = (os.path.join(ROOT, "docs") if res == "paper" and not tag else
                    os.path.join(ROOT, "docs", f"validation{tag}") if res == "paper" else
                    os.path.join(ROOT, "results", f"validation-{res}{tag}"))
+    variant = parse_vars(os.environ.get("VARS", ""))
+    if variant and not ("OUT" in os.environ and "WORK" in os.environ):
+        sys.exit("validate: VARS makes a variant study: give it its own OUT and WORK (the "
+                 "defaults are the model's report and runs)")
     out = os.path.abspath(os.environ.get("OUT", default_out))
     work = os.path.abspath(os.environ.get("WORK", os.path.join(ROOT, "results", f"validation-{res}{tag}", "work")))
     # a copy of the inputs as they are now (see common.INPUTS)
@@ -58,7 +78,7 @@ def main():
         sys.exit(f"validate: CASES must name cases among {','.join(cases.CASES)}, got {','.join(unknown)}")
     plotdir = os.path.join(out, "validation")
     os.makedirs(plotdir, exist_ok=True)
-    run = Runner(work, nprocs=int(os.environ.get("NP", "1")), wall=wall)
+    run = Runner(work, nprocs=int(os.environ.get("NP", "1")), wall=wall, variant=variant)
     ctx = dict(res=res, level=level, plotdir=plotdir,
                study_levels=[int(x) for x in os.environ.get("STUDY_LEVELS", "3 4 5").split()])
     summary_path = os.path.join(out, "validation-summary.json")
