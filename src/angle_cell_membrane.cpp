@@ -116,9 +116,8 @@ void AngleCellMembrane::compute(int eflag, int vflag)
     }
 
     double fa[3], fc[3];
-    const bool relax = wrinkle[type] > 0.0;
-    membrane_forces(G[type], t0[type], rest, s, fa, fc, relax);
-    if (eflag) eangle = membrane_energy(G[type], t0[type], rest, s, relax);
+    const double w = membrane_forces(G[type], t0[type], rest, s, fa, fc, wrinkle[type] > 0.0);
+    if (eflag) eangle = w;
 
     double fb[3] = {-fa[0] - fc[0], -fa[1] - fc[1], -fa[2] - fc[2]};
     const int node[3] = {ia, ib, ic};

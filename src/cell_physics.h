@@ -620,14 +620,20 @@ inline void membrane_strain(const MembraneRest &rest, const double a[3], const d
 // 2x2 in the reference frame) and W = G t0 A0 dev / 2. Without relax, K = I - C2^-1 / det C2
 // (Eq. M2) and dev = I1 - 3 (Eq. M1), formed from the deviations so that it keeps its digits near
 // rest; with relax, Eq. M3.
+// The larger eigenvalue of C2, lam1^2 (the principal stretches: membrane_stretches).
+inline double membrane_major(const MembraneStrain &s)
+{
+  const double tr = s.C2[0][0] + s.C2[1][1];
+  const double dif = s.C2[0][0] - s.C2[1][1];
+  const double root = std::sqrt(0.25 * dif * dif + s.C2[0][1] * s.C2[1][0]);
+  return 0.5 * tr + root;
+}
+
 inline void membrane_response(const MembraneStrain &s, bool relax, double K[2][2], double &dev)
 {
   if (relax) {
-    const double tr = s.C2[0][0] + s.C2[1][1];
-    const double dif = s.C2[0][0] - s.C2[1][1];
     const double off = s.C2[0][1];
-    const double root = std::sqrt(0.25 * dif * dif + off * off);
-    const double e1 = 0.5 * tr + root;    // lam1^2
+    const double e1 = membrane_major(s);    // lam1^2
     const double lam1 = std::sqrt(e1);
     if (!(lam1 > 1.0)) {    // slack
       K[0][0] = K[0][1] = K[1][0] = K[1][1] = 0.0;
@@ -680,9 +686,10 @@ inline double membrane_energy(double G, double t0, const MembraneRest &rest,
 
 // Forces on the two outer nodes of the triangle (Eq. M2, or the gradient of Eq. M3 with relax):
 // fa = -dW/da, fc = -dW/dc; the central node takes -(fa + fc). Needs J2 > 0 (a triangle with
-// area).
-inline void membrane_forces(double G, double t0, const MembraneRest &rest, const MembraneStrain &s,
-                            double fa[3], double fc[3], bool relax = false)
+// area). Returns the energy W, which the response gives at no extra cost.
+inline double membrane_forces(double G, double t0, const MembraneRest &rest,
+                              const MembraneStrain &s, double fa[3], double fc[3],
+                              bool relax = false)
 {
   double K[2][2], dev;
   membrane_response(s, relax, K, dev);
@@ -694,16 +701,14 @@ inline void membrane_forces(double G, double t0, const MembraneRest &rest, const
     fa[d] = -(P0 * rest.Dinv[0][0] + P1 * rest.Dinv[0][1]);
     fc[d] = -(P0 * rest.Dinv[1][0] + P1 * rest.Dinv[1][1]);
   }
+  return 0.5 * G * t0 * rest.area * dev;    // as membrane_energy, to the bit
 }
 
 // Principal in-plane stretches (lam1 >= lam2) of the triangle: square roots of the eigenvalues
 // of C2 (for failure by the largest stretch and for diagnostics).
 inline void membrane_stretches(const MembraneStrain &s, double &lam1, double &lam2)
 {
-  const double tr = s.C2[0][0] + s.C2[1][1];
-  const double dif = s.C2[0][0] - s.C2[1][1];
-  const double root = std::sqrt(0.25 * dif * dif + s.C2[0][1] * s.C2[1][0]);
-  const double e1 = 0.5 * tr + root;
+  const double e1 = membrane_major(s);
   lam1 = std::sqrt(e1);
   lam2 = std::sqrt(s.J2 / e1);
 }

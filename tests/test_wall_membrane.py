@@ -110,6 +110,29 @@ def tension_field_energy(ref, tri, x):
     return E, states
 
 
+def scaled(setup, a, b, c, d, tag, after=""):
+    """The wall of `setup` scaled by (a, b, c) about its centre of mass along x, y, z: (angle
+    energy, virial sum x.f) after run 0, then the commands `after`."""
+    inp = setup + f"""
+variable        cx equal xcm(all,x)
+variable        cy equal xcm(all,y)
+variable        cz equal xcm(all,z)
+variable        sx atom v_cx+{a}*(x-v_cx)
+variable        sy atom v_cy+{b}*(y-v_cy)
+variable        sz atom v_cz+{c}*(z-v_cz)
+set             group all x v_sx y v_sy z v_sz
+compute         vir all pressure NULL virial
+variable        xf equal c_vir*3*vol
+thermo_style    custom step eangle v_xf
+thermo_modify   format float %.17g
+run             0
+print           "SCALED $(eangle:%.17g) $(v_xf:%.17g)"
+""" + after
+    _, log = T.lmp(inp, cwd=d, log=f"log.{tag}")
+    line = [l for l in log.splitlines() if l.startswith("SCALED")][-1].split()
+    return float(line[1]), float(line[2])
+
+
 def main():
     d = T.workdir("wall_membrane")
     T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 0, cwd=d)
@@ -119,24 +142,8 @@ def main():
 
     # 1. uniform scaling: energy and virial against the closed form
     for lam in (0.95, 1.02, 1.1):
-        inp = SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001) + f"""
-variable        cx equal xcm(all,x)
-variable        cy equal xcm(all,y)
-variable        cz equal xcm(all,z)
-variable        sx atom v_cx+{lam}*(x-v_cx)
-variable        sy atom v_cy+{lam}*(y-v_cy)
-variable        sz atom v_cz+{lam}*(z-v_cz)
-set             group all x v_sx y v_sy z v_sz
-compute         vir all pressure NULL virial
-variable        xf equal c_vir*3*vol
-thermo_style    custom step eangle v_xf
-thermo_modify   format float %.17g
-run             0
-print           "SCALED {lam} $(eangle:%.17g) $(v_xf:%.17g)"
-"""
-        _, log = T.lmp(inp, cwd=d, log=f"log.scale{lam}")
-        line = [l for l in log.splitlines() if l.startswith("SCALED")][-1].split()
-        E, xf = float(line[2]), float(line[3])
+        E, xf = scaled(SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001), lam, lam, lam, d,
+                       f"scale{lam}")
         Eexp = 0.5 * G * T0 * A0 * (2 * lam ** 2 + lam ** -4 - 3)
         xfexp = -2.0 * G * T0 * A0 * (lam ** 2 - lam ** -4)
         eE, ex = abs(E / Eexp - 1), abs(xf / xfexp - 1)
@@ -230,32 +237,13 @@ write_dump      all custom restart.dump id x y z vx vy vz modify sort id format 
     ref, tri = wall_triangles(os.path.join(d, "cell.data"))
     wr = SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
         f"angle_coeff     1 {G} {T0} 0.0", f"angle_coeff     1 {G} {T0} 0.0 wrinkle yes")
-    scale = """
-variable        cx equal xcm(all,x)
-variable        cy equal xcm(all,y)
-variable        cz equal xcm(all,z)
-variable        sx atom v_cx+{a}*(x-v_cx)
-variable        sy atom v_cy+{b}*(y-v_cy)
-variable        sz atom v_cz+{c}*(z-v_cz)
-set             group all x v_sx y v_sy z v_sz
-compute         vir all pressure NULL virial
-variable        xf equal c_vir*3*vol
-thermo_style    custom step eangle v_xf
-thermo_modify   format float %.17g
-run             0
-print           "SCALED $(eangle:%.17g) $(v_xf:%.17g)"
-"""
-    def scaled(inp, tag):
-        _, log = T.lmp(inp, cwd=d, log=f"log.{tag}")
-        line = [l for l in log.splitlines() if l.startswith("SCALED")][-1].split()
-        return float(line[1]), float(line[2])
-    E, _ = scaled(wr + scale.format(a=1.08, b=1.0, c=0.93) + """
+    E, _ = scaled(wr, 1.08, 1.0, 0.93, d, "wrinkle-aniso", """
 write_dump      all custom wrinkled.dump id x y z modify sort id format float %.17g
 write_data      wrinkled.data
 write_restart   wrinkled.restart
-""", "wrinkle-aniso")
-    Efull, _ = scaled(SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001)
-                      + scale.format(a=1.08, b=1.0, c=0.93), "full-aniso")
+""")
+    Efull, _ = scaled(SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001), 1.08, 1.0, 0.93, d,
+                      "full-aniso")
     dmp = np.loadtxt(os.path.join(d, "wrinkled.dump"), skiprows=9)
     x = {int(r[0]): r[1:4] for r in dmp}
     Eexp, states = tension_field_energy(ref, tri, x)
@@ -267,7 +255,7 @@ write_restart   wrinkled.restart
     T.check("tension-field energy of the wall equals Eq. M3 summed independently", eE < 1e-10,
             f"{eE:.1e}")
     T.check("the tension-field wall stores less than the full sheet", E < Efull, f"{E:.6g} {Efull:.6g}")
-    E95, xf95 = scaled(wr + scale.format(a=0.95, b=0.95, c=0.95), "wrinkle-0.95")
+    E95, xf95 = scaled(wr, 0.95, 0.95, 0.95, d, "wrinkle-0.95")
     print(f"wrinkle yes, wall scaled by 0.95: energy {E95:g}, sum x.f {xf95:g}")
     T.check("a wall shrunk in every direction is slack: no energy, no virial",
             E95 == 0.0 and xf95 == 0.0, f"{E95:g} {xf95:g}")

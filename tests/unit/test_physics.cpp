@@ -968,6 +968,30 @@ double A0()
   return 0.5 * std::fabs((P[0][0] - P[1][0]) * (P[2][1] - P[1][1]) - (P[0][1] - P[1][1]) * (P[2][0] - P[1][0]));
 }
 
+// largest |force + central-difference energy gradient (step 1e-5)| over the nine components of
+// triangle t, relative to its largest force; show prints each component
+double gradient_error(const Tri &t, bool relax, bool show)
+{
+  double E, f[3][3], area;
+  evaluate(t, E, f, area, relax);
+  double worst = 0, fmax = 0;
+  for (auto &r : f) for (double v : r) fmax = std::max(fmax, std::fabs(v));
+  for (int n = 0; n < 3; n++)
+    for (int d = 0; d < 3; d++) {
+      const double h = 1e-5;
+      Tri p = t, m = t;
+      p.x[n][d] += h;
+      m.x[n][d] -= h;
+      double Ep, Em, fp[3][3], ap;
+      evaluate(p, Ep, fp, ap, relax);
+      evaluate(m, Em, fp, ap, relax);
+      const double fd = -(Ep - Em) / (2 * h);
+      worst = std::max(worst, std::fabs(fd - f[n][d]) / fmax);
+      if (show) std::printf("node %d dir %d  force %.12g  -dE/dx %.12g\n", n, d, f[n][d], fd);
+    }
+  return worst;
+}
+
 }    // namespace
 
 TEST(MembraneElement, ClosedForms)
@@ -1010,23 +1034,7 @@ TEST(MembraneElement, ForcesAreMinusEnergyGradient)
   const double F2[2][2] = {{1.13, 0.21}, {-0.08, 0.91}};
   Tri t = make(F2);
   t.x[2][2] += 0.3;    // and out of the plane
-  double E, f[3][3], area;
-  evaluate(t, E, f, area);
-  double worst = 0, fmax = 0;
-  for (int n = 0; n < 3; n++) for (int d = 0; d < 3; d++) fmax = std::max(fmax, std::fabs(f[n][d]));
-  for (int n = 0; n < 3; n++)
-    for (int d = 0; d < 3; d++) {
-      const double h = 1e-5;
-      Tri p = t, m = t;
-      p.x[n][d] += h;
-      m.x[n][d] -= h;
-      double Ep, Em, fp[3][3], ap;
-      evaluate(p, Ep, fp, ap);
-      evaluate(m, Em, fp, ap);
-      const double fd = -(Ep - Em) / (2 * h);
-      worst = std::max(worst, std::fabs(fd - f[n][d]) / fmax);
-      std::printf("node %d dir %d  force %.12g  -dE/dx %.12g\n", n, d, f[n][d], fd);
-    }
+  const double worst = gradient_error(t, false, true);
   std::printf("largest difference / largest force %.2e\n", worst);
   EXPECT_LT(worst, 1e-8);
 }
@@ -1194,19 +1202,7 @@ TEST(MembraneElement, TensionFieldForcesAreMinusEnergyGradient)
     double E, f[3][3], area, Efull, ff[3][3];
     evaluate(t, E, f, area, true);
     evaluate(t, Efull, ff, area, false);
-    double worst = 0, fmax = 0;
-    for (int n = 0; n < 3; n++) for (int d = 0; d < 3; d++) fmax = std::max(fmax, std::fabs(f[n][d]));
-    for (int n = 0; n < 3; n++)
-      for (int d = 0; d < 3; d++) {
-        const double h = 1e-5;
-        Tri p = t, m = t;
-        p.x[n][d] += h;
-        m.x[n][d] -= h;
-        double Ep, Em, fp[3][3], ap;
-        evaluate(p, Ep, fp, ap, true);
-        evaluate(m, Em, fp, ap, true);
-        worst = std::max(worst, std::fabs(-(Ep - Em) / (2 * h) - f[n][d]) / fmax);
-      }
+    const double worst = gradient_error(t, true, false);
     std::printf("%s state: energy %.10g (full sheet %.10g), largest difference / largest force "
                 "%.2e\n", wrinkled ? "wrinkled" : "taut", E, Efull, worst);
     if (wrinkled) EXPECT_LT(E, Efull);
