@@ -48,8 +48,8 @@ def main():
     # ---- turgor ordering at small strain
     F3 = {}
     for P in (300, 30, 3):
-        run("in.turgor", d, f"log.turgor-{P}", restart="inflated.restart", turgor=P, Lpset=1e-2,
-            nsettle=20000, settled=f"turgor-{P}.restart", setout=f"settle-{P}.dat", vplate=0.5,
+        run("in.turgor", d, f"log.turgor-{P}", restart="inflated.restart", turgor=P,
+            settled=f"turgor-{P}.restart", setout=f"settle-{P}.dat", vplate=0.5,
             strain=0.06, every=100, out=f"turgor-{P}.dat")
         a = T.load(f"{d}/turgor-{P}.dat")
         e, f = a[:, A.CMP["eps"]], 0.5 * (a[:, A.CMP["ftop"]] + a[:, A.CMP["fbot"]])

@@ -94,6 +94,18 @@ def main():
     T.check("5: membrane reference compared at 364 kPa", len(stiff) >= 4, f"{len(stiff)} strains")
     for r in stiff:
         within(f"5: {r['name']} vs membrane (2 r0/R)", r, LAYER)
+    # the lower turgors are let down from 364 kPa (in.turgor) and settle there: the turgor is set
+    # by osmosis (1%, as test_inflate), and the fluid's mass has stopped moving (a cell pumped up
+    # directly to 3 kPa still took in 0.4% per 4 us at level 4, docs/membrane.rst; 1e-3 is a
+    # quarter of that)
+    for P in ("300", "30", "3"):
+        st = rows(c5, group=f"P{P}-settle")
+        T.check(f"5: {P} kPa cell settled from 364 kPa (two rows)", len(st) == 2, f"{len(st)} rows")
+        for r in st:
+            if r["reference"] is not None:
+                within(f"5: {r['name']} (1%)", r, 0.01)
+            else:
+                T.check(f"5: {r['name']} below 1e-3", abs(r["measured"]) < 1e-3, f"{r['measured']:+.2e}")
     # 6: not run at coarse (it needs the 10242-node level); the report says so.
     T.check("6: resolution study skipped at RES=coarse with a statement",
             cases["6"]["status"] == "skipped" and len(cases["6"]["notes"]) > 0)

@@ -26,3 +26,21 @@ def test_nothing_in_common_writes_no_section():
     mine = [_entry("5", [("a", 1.0, 1.0)])]
     assert report.side_by_side("membrane", mine, [("tether", dict(cases=[_entry("6", [("a", 1.0, 1.0)])]), ".")]) == []
     assert report.side_by_side("membrane", mine, []) == []
+
+
+def test_case5_protocol_per_wall():
+    """Case 5: the tethers keep the paper's protocol; the membrane walls meet the membrane model on
+    its terms (tension-field element, f0 x 10 at every level, slower plates), in files of their own."""
+    import pytest
+    from cellmech.params import LEVELS
+    from cellmech.validation import cases
+    assert cases.case5_protocol("tether", 4) == ({}, "", cases.PAPER_VPLATE)
+    for wall in ("membrane", "bending"):
+        for lvl in LEVELS:
+            model, name, v = cases.case5_protocol(wall, lvl)
+            assert model["wrinkle"] == "yes"
+            assert float(model["f0"]) == pytest.approx(cases.MEMBRANE_CASE5["f0_scale"] * LEVELS[lvl]["f0"])
+            assert name and v < cases.PAPER_VPLATE
+    # records of another model or speed never share a file (a run's stamp would replace another's)
+    names = {cases.compress_record(4, 364.0, n, v) for n in ("", "-case5") for v in (0.5, 0.125)}
+    assert len(names) == 4

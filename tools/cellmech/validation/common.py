@@ -27,6 +27,8 @@ SPECTRUM = os.environ.get("CELLMECH_SPECTRUM", os.path.join(ROOT, "build", "cell
 # 10 us leave 7 us (several relaxation times) for the inflation's oscillation to die out, at half
 # the cost of the 20 us that levels 3 and 4 can afford
 T_INFLATE = {3: 20.0, 4: 20.0, 5: 10.0}
+# time (us) a cell brought down from 364 kPa settles at its turgor (in.turgor's 20000 steps of 1 ns)
+T_SETTLE = 20.0
 
 # the stiff cell of Table I (docs/model.md section 3.1), units micro: from cell-model.lmp and params
 _T = params.table()
@@ -36,7 +38,7 @@ STIFF = params.stiff()
 
 _CODE = []
 USED_INPUTS = ("cell-model.lmp", "cell-wall.lmp", "in.inflate", "in.compress", "in.breathing", "in.breathing-fluid",
-               "in.sheet")
+               "in.sheet", "in.turgor")
 
 
 def code_version():
@@ -175,19 +177,38 @@ class Runner:
                               "--inset", LEVELS[level]["r0"], *(["--bending"] if bend else []))
         return data, nw, nf
 
-    def inflate(self, level, P=STIFF["P"], c=C_PHYS, t_us=None, wall=None):
+    def inflate(self, level, P=STIFF["P"], c=C_PHYS, t_us=None, wall=None, model=None, name=""):
         """Inflate the stiff cell at `level` to turgor P (kPa) with sound speed c and the wall
         `wall` (default the Runner's); return (restart file, inflate.dat name, wall nodes, fluid
-        particles)."""
+        particles). `model`: -var settings over the level's (model_vars), named by `name` in the
+        files, so that runs of another model never share them."""
         wall = wall or self.wall
         data, nw, nf = self.cell(level, wall)
-        tag = f"L{level}-P{P:g}-c{c:g}" + ("" if wall == "tether" else f"-{wall}")
-        mv = model_vars(level)
+        tag = f"L{level}-P{P:g}-c{c:g}" + ("" if wall == "tether" else f"-{wall}") + name
+        mv = dict(model_vars(level), **(model or {}))
         nsteps = int(round((t_us or T_INFLATE[level]) / mv["dt"]))
         self.lmp("in.inflate", f"log.inflate-{tag}", outputs=(f"inflate-{tag}.dat", f"inflated-{tag}.restart"),
                  dir=INPUTS, data=data, Pi=-P, c=c, nsteps=nsteps, every=nsteps // 20,
                  out=f"inflate-{tag}.dat", restart_out=f"inflated-{tag}.restart", wall=wall, **mv)
         return f"inflated-{tag}.restart", f"inflate-{tag}.dat", nw, nf
+
+    def turgid(self, level, P, wall=None, model=None, name=""):
+        """The stiff cell at turgor P (kPa) as the package makes one (lammps-inputs/in.turgor):
+        inflated to the paper's 364 kPa, then brought to P by osmosis. A cell pumped up directly
+        to a low turgor is still taking in water after tens of us (docs/membrane.rst). Returns
+        (restart file, record of its last stage, wall nodes, fluid particles, kind of record:
+        "inflate" or "settle")."""
+        restart, infl, nw, nf = self.inflate(level, STIFF["P"], wall=wall, model=model, name=name)
+        if P == STIFF["P"]:
+            return restart, infl, nw, nf, "inflate"
+        wall = wall or self.wall
+        tag = f"L{level}-P{P:g}" + ("" if wall == "tether" else f"-{wall}") + name
+        mv = dict(model_vars(level), **(model or {}))
+        self.lmp("in.turgor", f"log.settle-{tag}", outputs=(f"settle-{tag}.dat", f"settled-{tag}.restart"),
+                 dir=INPUTS, restart=restart, turgor=P, compress=0, dtset=mv["dt"],
+                 nsettle=int(round(T_SETTLE / mv.pop("dt"))),
+                 setout=f"settle-{tag}.dat", settled=f"settled-{tag}.restart", wall=wall, **mv)
+        return f"settled-{tag}.restart", f"settle-{tag}.dat", nw, nf, "settle"
 
 
 def resolution(level, fluid=True, nw=None, nf=None):
