@@ -475,7 +475,7 @@ def case_compression(run, level, ctx):
             "where the plate force comes from the volume the wall must hold, at low turgor.")
     e.note(f"Turgid cells: 364 kPa by osmotic inflation (in.inflate, {T_INFLATE[level]:g} us); "
            + ", ".join(f"{P:g}" for P in settled) + f" kPa brought down from it by osmosis and "
-           f"settled for {T_SETTLE:g} us (in.turgor, as the paper's turgor series in "
+           f"settled for {T_SETTLE[level]:g} us (in.turgor, as the paper's turgor series in "
            f"docs/experiments.md). A cell pumped up directly to a few kPa is still taking in water "
            f"after tens of us with its wall's volume fixed, so its state depends on how long it "
            f"was inflated (docs/membrane.rst).")
