@@ -9,7 +9,7 @@ import re
 import numpy as np
 
 from .common import (C_PHYS, INPUTS, LEVELS, M_WALL, R0, RHO0, SOFT, STIFF, T_INFLATE, T_SETTLE,
-                     model_vars, resolution)
+                     model_vars, resolution, run_vars)
 from . import analysis
 from . import bending
 from . import references as ref
@@ -77,26 +77,23 @@ def _save(fig, ctx, name, entry):
 
 # ---- runs shared between cases (the Runner skips a run already done with the same settings) -----
 
-def settle_tail(a):
-    """The last fifth (in time) of in.turgor's settling record a (step t P lam Feq M V)."""
-    return a[a[:, 1] >= a[-1, 1] - 0.2 * (a[-1, 1] - a[0, 1])]
-
-
 def turgid_state(run, rec):
     """The turgid cell at the end of its preparation, averaged over the last fifth of it: the
-    record of in.inflate (inflate-*.dat) or of in.turgor's settling (settle-*.dat)."""
+    record of in.inflate (inflate-*.dat) or of in.turgor's settling (settle-*.dat; then also the
+    relative change of the fluid's mass over that fifth, `drift`, and its length in us, `span`)."""
     a = np.loadtxt(run.path(rec), ndmin=2)
     if os.path.basename(rec).startswith("settle-"):    # step t P lam Feq M V, every 100 steps
-        last = settle_tail(a)
+        last = a[a[:, 1] >= a[-1, 1] - 0.2 * (a[-1, 1] - a[0, 1])]
         return dict(P=last[:, 2].mean(), lam=last[:, 3].mean(), Feq=last[:, 4].mean(), leak=0,
-                    R=R0 * last[:, 3].mean())
+                    R=R0 * last[:, 3].mean(), drift=last[-1, 5] / last[0, 5] - 1,
+                    span=last[-1, 1] - last[0, 1])
     last = a[-4:]                              # step t V A P M Nf lam lammax Feq leak dM, 20 records
     return dict(P=last[:, 4].mean(), lam=last[:, 7].mean(), Feq=last[:, 9].mean(),
                 leak=int(a[:, 10].max()), R=R0 * last[:, 7].mean())
 
 
 # Case 5 for the membrane walls meets the membrane model (tools/membrane.py) on that model's own
-# terms (docs/membrane.rst, "Tension-field wall and stiff contact"):
+# terms (docs/membrane.rst, "The membrane walls' case 5"):
 #   - its sheet carries no compression (the contact disc lies slack on the plate): the
 #     tension-field element, Eq. M3 (-var wrinkle yes);
 #   - its contents have the Tait fluid's compressibility right up to the wall, where the paper's
@@ -120,9 +117,15 @@ def case5_protocol(wall, level):
             m["vplate"])
 
 
+def compress_tag(level, P, name="", vplate=PAPER_VPLATE):
+    """The tag of a compression made by compress(): its log is log.compress-TAG, its record
+    compress-TAG.dat (compress_record)."""
+    return f"L{level}-P{P:g}{name}" + ("" if vplate == PAPER_VPLATE else f"-v{vplate:g}")
+
+
 def compress_record(level, P, name="", vplate=PAPER_VPLATE):
     """File name of in.compress's record of a compression made by compress()."""
-    return f"compress-L{level}-P{P:g}{name}" + ("" if vplate == PAPER_VPLATE else f"-v{vplate:g}") + ".dat"
+    return f"compress-{compress_tag(level, P, name, vplate)}.dat"
 
 
 def compress(run, level, P, model=None, name="", vplate=PAPER_VPLATE):
@@ -131,13 +134,13 @@ def compress(run, level, P, model=None, name="", vplate=PAPER_VPLATE):
     within 2%); `model` and `name` as Runner.inflate. Returns (eps, F, record of the turgid
     cell's preparation, wall nodes, fluid particles) with F the mean of the two plate forces; the
     record itself is compress_record(level, P, name, vplate)."""
-    restart, rec, nw, nf, _ = run.turgid(level, P, model=model, name=name)
-    out = compress_record(level, P, name, vplate)
-    tag = out[len("compress-"):-len(".dat")]
+    restart, rec, nw, nf = run.turgid(level, P, model=model, name=name)
+    tag = compress_tag(level, P, name, vplate)
+    out = f"compress-{tag}.dat"
     # the same strain between records at every speed
     every = int(round(100 * PAPER_VPLATE / vplate))
     run.lmp("in.compress", f"log.compress-{tag}", outputs=(out,), dir=INPUTS, restart=restart,
-            vplate=vplate, every=every, out=out, strain=0.22, **dict(model_vars(level), **(model or {})))
+            vplate=vplate, every=every, out=out, strain=0.22, **run_vars(level, model))
     a = np.loadtxt(run.path(out), ndmin=2)     # step t eps Ftop Fbot Feq P
     return a[:, 2], 0.5 * (a[:, 3] + a[:, 4]), rec, nw, nf
 
@@ -418,12 +421,11 @@ def case_compression(run, level, ctx):
         e.add(f"P={P:g}: turgid cell's F_eq vs P pi R^2 (Young-Laplace)", st["Feq"],
               st["P"] * math.pi * st["R"] ** 2, "nN", tol=None if tol is None else 0.01,
               group="young-laplace")
-        if rec.startswith("settle-"):
+        if "drift" in st:
             # settled: the turgor reached, and the fluid mass steady over the last fifth
-            last = settle_tail(np.loadtxt(run.path(rec), ndmin=2))
             e.add(f"P={P:g}: turgor after settling (in.turgor)", st["P"], P, "kPa", group=f"P{P:g}-settle")
-            e.add(f"P={P:g}: fluid mass change over the last {last[-1, 1] - last[0, 1]:.0f} us of settling",
-                  last[-1, 5] / last[0, 5] - 1, None, group=f"P{P:g}-settle")
+            e.add(f"P={P:g}: fluid mass change over the last {st['span']:.0f} us of settling",
+                  st["drift"], None, group=f"P{P:g}-settle")
             settled.append(P)
         Fw = analysis.windowed(eps, F, COMPRESS_STRAINS, half)
         rho = ref.tait_density(st["P"], RHO0, C_PHYS)
@@ -543,7 +545,7 @@ def case_resolution(run, level, ctx):
             continue
         got[l], nfs[l] = (Fw[0], Fw[1], w[0], w[1]), nf
         m = re.findall(r"Loop time of ([\d.eE+-]+) on (\d+) procs for (\d+) steps",
-                       open(run.path("log." + compress_record(l, STIFF["P"], name)[:-len(".dat")])).read())
+                       open(run.path(f"log.compress-{compress_tag(l, STIFF['P'], name)}")).read())
         if m:
             e.note(f"level {l}: compression {float(m[-1][0]) / int(m[-1][2]) * 1e3:.1f} ms per step "
                    f"on {m[-1][1]} rank(s) (a shared machine: other work ran beside it)")

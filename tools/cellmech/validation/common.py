@@ -199,7 +199,7 @@ class Runner:
         wall = wall or self.wall
         data, nw, nf = self.cell(level, wall)
         tag = f"L{level}-P{P:g}-c{c:g}" + ("" if wall == "tether" else f"-{wall}") + name
-        mv = dict(model_vars(level), **(model or {}))
+        mv = run_vars(level, model)
         nsteps = int(round((t_us or T_INFLATE[level]) / mv["dt"]))
         self.lmp("in.inflate", f"log.inflate-{tag}", outputs=(f"inflate-{tag}.dat", f"inflated-{tag}.restart"),
                  dir=INPUTS, data=data, Pi=-P, c=c, nsteps=nsteps, every=nsteps // 20,
@@ -210,19 +210,24 @@ class Runner:
         """The stiff cell at turgor P (kPa) as the package makes one (lammps-inputs/in.turgor):
         inflated to the paper's 364 kPa, then brought to P by osmosis. A cell pumped up directly
         to a low turgor is still taking in water after tens of us (docs/membrane.rst). Returns
-        (restart file, record of its last stage, wall nodes, fluid particles, kind of record:
-        "inflate" or "settle")."""
+        (restart file, record of its last stage: inflate-*.dat or settle-*.dat, wall nodes,
+        fluid particles)."""
         restart, infl, nw, nf = self.inflate(level, STIFF["P"], wall=wall, model=model, name=name)
         if P == STIFF["P"]:
-            return restart, infl, nw, nf, "inflate"
+            return restart, infl, nw, nf
         wall = wall or self.wall
         tag = f"L{level}-P{P:g}" + ("" if wall == "tether" else f"-{wall}") + name
-        mv = dict(model_vars(level), **(model or {}))
+        mv = run_vars(level, model)
         self.lmp("in.turgor", f"log.settle-{tag}", outputs=(f"settle-{tag}.dat", f"settled-{tag}.restart"),
                  dir=INPUTS, restart=restart, turgor=P, compress=0, dtset=mv["dt"],
                  nsettle=int(round(T_SETTLE[level] / mv.pop("dt"))),
                  setout=f"settle-{tag}.dat", settled=f"settled-{tag}.restart", wall=wall, **mv)
-        return f"settled-{tag}.restart", f"settle-{tag}.dat", nw, nf, "settle"
+        return f"settled-{tag}.restart", f"settle-{tag}.dat", nw, nf
+
+
+def run_vars(level, model=None):
+    """The level's -var settings of cell-model.lmp (model_vars) with a case's own over them."""
+    return dict(model_vars(level), **(model or {}))
 
 
 def resolution(level, fluid=True, nw=None, nf=None):
