@@ -403,14 +403,20 @@ def membrane_reference(P, strains, rho, material="neohookean", volumes=False):
 REF_GRID = tuple(np.round(np.arange(1, 226) * 1e-3, 3))
 
 
+def on_grid(values):
+    """(strains, values) of the REF_GRID points where the membrane solver gave a value (values
+    None or a list with None where it gave none); two empty tuples if it gave none."""
+    ok = [(x, v) for x, v in zip(REF_GRID, values or ()) if v is not None]
+    return tuple(zip(*ok)) if ok else ((), ())
+
+
 def windowed_reference(eps, centres, half, forces):
     """The reference's forces on REF_GRID (None where its solver gave none) seen through the
     simulation's windows at its records eps (analysis.windowed_curve): each row compares like
     with like. None for a window the reference does not cover."""
-    ok = [(x, f) for x, f in zip(REF_GRID, forces or ()) if f is not None]
-    if not ok:
+    xs, ys = on_grid(forces)
+    if not xs:
         return [None] * len(centres)
-    xs, ys = zip(*ok)
     got = analysis.windowed_curve(eps, centres, half, xs, ys)
     return [None if math.isnan(g) else float(g) for g in got]
 
@@ -466,14 +472,14 @@ def case_compression(run, level, ctx):
             for x, what in zip(dv, ("volume the wall encloses", "fluid volume sum m/rho")):
                 e.add(f"P={P:g}: {what}, change at eps {a[k, 2]:.2f}", x, None,
                       group=f"P{P:g}-volume")
-            ok = [(x, v) for x, v in zip(REF_GRID, mem_dv or ()) if v is not None]
-            if ok:
-                volumes[P] = (a[k, 2], dv[0], dv[1], float(np.interp(a[k, 2], *zip(*ok))))
+            xs, vs = on_grid(mem_dv)
+            if xs:
+                volumes[P] = (a[k, 2], dv[0], dv[1], float(np.interp(a[k, 2], xs, vs)))
         ax.plot(eps, F * 1e-3, f"C{i}-", lw=1, label=f"P = {P:g} kPa (sim)")
         ax.plot(COMPRESS_STRAINS, Fw * 1e-3, f"C{i}o", ms=4)
         if mem is not None:
-            ok = [(s, m) for s, m in zip(REF_GRID, mem) if m is not None]
-            ax.plot([s for s, _ in ok], [m * 1e-3 for _, m in ok], f"C{i}--", lw=1.5,
+            xs, ms = on_grid(mem)
+            ax.plot(xs, np.array(ms) * 1e-3, f"C{i}--", lw=1.5,
                     label=f"P = {P:g} kPa (membrane)")
     ax.set_xlim(0, 0.22)
     ax.set_xlabel("strain eps = DeltaX / 2R")

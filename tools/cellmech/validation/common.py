@@ -218,9 +218,10 @@ class Runner:
         wall = wall or self.wall
         tag = f"L{level}-P{P:g}" + ("" if wall == "tether" else f"-{wall}") + name
         mv = run_vars(level, model)
+        dt = mv.pop("dt")       # in.turgor's step is dtset
         self.lmp("in.turgor", f"log.settle-{tag}", outputs=(f"settle-{tag}.dat", f"settled-{tag}.restart"),
-                 dir=INPUTS, restart=restart, turgor=P, compress=0, dtset=mv["dt"],
-                 nsettle=int(round(T_SETTLE[level] / mv.pop("dt"))),
+                 dir=INPUTS, restart=restart, turgor=P, compress=0, dtset=dt,
+                 nsettle=int(round(T_SETTLE[level] / dt)),
                  setout=f"settle-{tag}.dat", settled=f"settled-{tag}.restart", wall=wall, **mv)
         return f"settled-{tag}.restart", f"settle-{tag}.dat", nw, nf
 
