@@ -33,12 +33,14 @@ def test_case5_protocol_per_wall():
     its terms (tension-field element, f0 x 10 at every level, slower plates), in files of their own."""
     import pytest
     from cellmech.params import LEVELS
-    from cellmech.validation import cases
-    assert cases.case5_protocol("tether", 4) == ({}, "", cases.PAPER_VPLATE)
+    from cellmech.validation import cases, common
+    assert cases.case5_protocol("tether", 4) == ({}, "", cases.PAPER_VPLATE, {})
     for wall in ("membrane", "bending"):
         for lvl in LEVELS:
-            model, name, v = cases.case5_protocol(wall, lvl)
+            model, name, v, prep = cases.case5_protocol(wall, lvl)
             assert model["wrinkle"] == "yes"
+            # its cells at rest: longer than the defaults at every level (Young-Laplace creeps)
+            assert prep["t_inflate"] > common.T_INFLATE[lvl] and prep["t_settle"] > common.T_SETTLE[lvl]
             assert float(model["f0"]) == pytest.approx(cases.MEMBRANE_CASE5["f0_scale"] * LEVELS[lvl]["f0"])
             assert name and v < cases.PAPER_VPLATE
     # records of another model or speed never share a file (a run's stamp would replace another's)

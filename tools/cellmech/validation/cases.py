@@ -80,16 +80,24 @@ def _save(fig, ctx, name, entry):
 def turgid_state(run, rec):
     """The turgid cell at the end of its preparation, averaged over the last fifth of it: the
     record of in.inflate (inflate-*.dat) or of in.turgor's settling (settle-*.dat; then also the
-    relative change of the fluid's mass over that fifth, `drift`, and its length in us, `span`)."""
+    relative change of the fluid's mass over that fifth, `drift`). `yl_drift`: the change of
+    F_eq / (P pi R^2) over that fifth, `span` us long."""
     a = np.loadtxt(run.path(rec), ndmin=2)
+
+    def yl(rows, P, lam, Feq):     # F_eq / (P pi R^2) - 1 at each record: is the cell at rest?
+        return rows[:, Feq] / (rows[:, P] * math.pi * (R0 * rows[:, lam]) ** 2) - 1
+
     if os.path.basename(rec).startswith("settle-"):    # step t P lam Feq M V, every 100 steps
         last = a[a[:, 1] >= a[-1, 1] - 0.2 * (a[-1, 1] - a[0, 1])]
+        r = yl(last, 2, 3, 4)
         return dict(P=last[:, 2].mean(), lam=last[:, 3].mean(), Feq=last[:, 4].mean(), leak=0,
                     R=R0 * last[:, 3].mean(), drift=last[-1, 5] / last[0, 5] - 1,
-                    span=last[-1, 1] - last[0, 1])
+                    span=last[-1, 1] - last[0, 1], yl_drift=r[-1] - r[0])
     last = a[-4:]                              # step t V A P M Nf lam lammax Feq leak dM, 20 records
+    r = yl(last, 4, 7, 9)
     return dict(P=last[:, 4].mean(), lam=last[:, 7].mean(), Feq=last[:, 9].mean(),
-                leak=int(a[:, 10].max()), R=R0 * last[:, 7].mean())
+                leak=int(a[:, 10].max()), R=R0 * last[:, 7].mean(), yl_drift=r[-1] - r[0],
+                span=last[-1, 1] - last[0, 1])
 
 
 # Case 5 for the membrane walls meets the membrane model (tools/membrane.py) on that model's own
@@ -101,20 +109,28 @@ def turgid_state(run, rec):
 #     level, so the level table's f0 ~ r0^3 scaling is kept);
 #   - the force at small strain is quasistatic: at 30 kPa and 5% strain it falls with the plate
 #     speed, +10.1% at 0.5 m/s, +2.4% at 0.125 and +0.6% at 0.0625 (+1.5% at 0.03125, within
-#     the microstates' spread; the paper squeezed at 0.002 m/s): plates at 0.0625 m/s.
+#     the microstates' spread; the paper squeezed at 0.002 m/s): plates at 0.0625 m/s;
+#   - its cell is at rest: Young-Laplace is a statement about equilibrium, and a turgid cell goes
+#     on creeping long after its turgor is reached (the fluid packs closer to the wall, under
+#     osmosis at the set turgor). At level 4 F_eq / (P pi R^2) - 1 goes -1.05% (inflated 20 us),
+#     -0.58% (80 us), -0.49% (320 us), its mass steady to 2e-5 from 80 us on; a 3 kPa cell let
+#     down from the 20-us cell +0.95% after 20 us of settling, +0.12% after 84, -0.20% after 260
+#     (docs/membrane.rst, "Young-Laplace"). Level 3 is steady from 60 us on: inflated 80 us,
+#     settled 100 us (t_inflate, t_settle, us, at every level).
 # The tethers keep the paper's protocol (its contact, 0.5 m/s): they are compared, not judged.
-MEMBRANE_CASE5 = dict(wrinkle="yes", f0_scale=10.0, vplate=0.0625)
+MEMBRANE_CASE5 = dict(wrinkle="yes", f0_scale=10.0, vplate=0.0625, t_inflate=80.0, t_settle=100.0)
 PAPER_VPLATE = 0.5
 
 
 def case5_protocol(wall, level):
-    """(-var settings over the level's model_vars, file-name suffix, plate speed in m/s) of case 5
-    for the wall."""
+    """(-var settings over the level's model_vars, file-name suffix, plate speed in m/s, the
+    turgid cell's preparation: Runner.turgid's t_inflate and t_settle, {} for the defaults) of
+    case 5 for the wall."""
     if wall == "tether":
-        return {}, "", PAPER_VPLATE
+        return {}, "", PAPER_VPLATE, {}
     m = MEMBRANE_CASE5
     return (dict(wrinkle=m["wrinkle"], f0=f"{LEVELS[level]['f0'] * m['f0_scale']:g}"), "-case5",
-            m["vplate"])
+            m["vplate"], dict(t_inflate=m["t_inflate"], t_settle=m["t_settle"]))
 
 
 def compress_tag(level, P, name="", vplate=PAPER_VPLATE):
@@ -128,13 +144,13 @@ def compress_record(level, P, name="", vplate=PAPER_VPLATE):
     return f"compress-{compress_tag(level, P, name, vplate)}.dat"
 
 
-def compress(run, level, P, model=None, name="", vplate=PAPER_VPLATE):
-    """The cell at turgor P (Runner.turgid) compressed to 22% strain at vplate (m/s; the paper's
-    protocol 0.5 m/s, quasistatic at 364 kPa: test_compress shows 0.25 m/s gives the same curve
-    within 2%); `model` and `name` as Runner.inflate. Returns (eps, F, record of the turgid
-    cell's preparation, wall nodes, fluid particles) with F the mean of the two plate forces; the
-    record itself is compress_record(level, P, name, vplate)."""
-    restart, rec, nw, nf = run.turgid(level, P, model=model, name=name)
+def compress(run, level, P, model=None, name="", vplate=PAPER_VPLATE, prep=None):
+    """The cell at turgor P (Runner.turgid, with the times of `prep`) compressed to 22% strain at
+    vplate (m/s; the paper's protocol 0.5 m/s, quasistatic at 364 kPa: test_compress shows
+    0.25 m/s gives the same curve within 2%); `model` and `name` as Runner.inflate. Returns (eps,
+    F, record of the turgid cell's preparation, wall nodes, fluid particles) with F the mean of
+    the two plate forces; the record itself is compress_record(level, P, name, vplate)."""
+    restart, rec, nw, nf = run.turgid(level, P, model=model, name=name, **(prep or {}))
     tag = compress_tag(level, P, name, vplate)
     out = f"compress-{tag}.dat"
     # the same strain between records at every speed
@@ -431,13 +447,13 @@ def case_compression(run, level, ctx):
     # at level 4 (the rate dependence at 0.5 m/s is 1.5%, docs/experiments.md); the tethers have
     # 1.5x its shear modulus (docs/membrane.rst) and are compared, not judged
     tol = None if run.wall == "tether" else 0.05
-    model, name, vplate = case5_protocol(run.wall, level)
+    model, name, vplate, prep = case5_protocol(run.wall, level)
     volumes, settled = {}, []
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6, 4.2))
     missing = False
     for i, P in enumerate(TURGOR_SERIES):
-        eps, F, rec, nw, nf = compress(run, level, P, model=model, name=name, vplate=vplate)
+        eps, F, rec, nw, nf = compress(run, level, P, model=model, name=name, vplate=vplate, prep=prep)
         e.d["resolution"] = resolution(level, nw=nw, nf=nf)
         st = turgid_state(run, rec)
         # Young-Laplace on the cells squeezed here: the issue's 1% for the membrane walls (case 3
@@ -445,6 +461,9 @@ def case_compression(run, level, ctx):
         e.add(f"P={P:g}: turgid cell's F_eq vs P pi R^2 (Young-Laplace)", st["Feq"],
               st["P"] * math.pi * st["R"] ** 2, "nN", tol=None if tol is None else 0.01,
               group="young-laplace")
+        # an equilibrium statement: it counts only if the cell is at rest
+        e.add(f"P={P:g}: change of F_eq / (P pi R^2) over the last {st['span']:.0f} us of the "
+              f"preparation", st["yl_drift"], None, group="young-laplace-rest")
         if "drift" in st:
             # settled: the turgor reached, and the fluid mass steady over the last fifth
             e.add(f"P={P:g}: turgor after settling (in.turgor)", st["P"], P, "kPa", group=f"P{P:g}-settle")
@@ -499,9 +518,11 @@ def case_compression(run, level, ctx):
             "inward between the discrete nodes: the wall loses more volume than its fluid. Both "
             "are of the size of r0 and the node spacing and shrink with the level; they matter "
             "where the plate force comes from the volume the wall must hold, at low turgor.")
-    e.note(f"Turgid cells: 364 kPa by osmotic inflation (in.inflate, {T_INFLATE[level]:g} us); "
+    t_inflate = prep.get("t_inflate") or T_INFLATE[level]
+    t_settle = prep.get("t_settle") or T_SETTLE[level]
+    e.note(f"Turgid cells: 364 kPa by osmotic inflation (in.inflate, {t_inflate:g} us); "
            + ", ".join(f"{P:g}" for P in settled) + f" kPa brought down from it by osmosis and "
-           f"settled for {T_SETTLE[level]:g} us (in.turgor, as the paper's turgor series in "
+           f"settled for {t_settle:g} us (in.turgor, as the paper's turgor series in "
            f"docs/experiments.md). A cell pumped up directly to a few kPa is still taking in water "
            f"after tens of us with its wall's volume fixed, so its state depends on how long it "
            f"was inflated (docs/membrane.rst).")
@@ -557,9 +578,9 @@ def case_resolution(run, level, ctx):
         # case 5's model of the wall and contact, at the paper's plate speed (the level-5 cell at
         # case 5's slower plates would cost hours; at 364 kPa the speed moves the force at 10-20%
         # strain by about 1%, docs/membrane.rst)
-        model, name, _ = case5_protocol(run.wall, l)
+        model, name, _, prep = case5_protocol(run.wall, l)
         try:
-            eps, F, infl, nw, nf = compress(run, l, STIFF["P"], model=model, name=name)
+            eps, F, infl, nw, nf = compress(run, l, STIFF["P"], model=model, name=name, prep=prep)
             Fw = analysis.windowed(eps, F, (0.10, 0.20), half)
             _, _, peaks, _, _, _ = breathe(run, l, C_PHYS)
             w = analysis.strongest_modes(peaks, 2)
@@ -585,7 +606,7 @@ def case_resolution(run, level, ctx):
         e.note(f"level {l}: fluid spacing dx = {dx:.3f} um, smoothing length s = {LEVELS[l]['s']:g} um, "
                f"s/dx = {LEVELS[l]['s'] / dx:.3f}")
         e.note(f"level {l} ({10 * 4 ** l + 2} wall nodes, {nf} fluid particles, dt = "
-               f"{LEVELS[l]['dt'] * 1e3:g} ns): inflation {T_INFLATE[l]:g} us, compression to 22% "
+               f"{LEVELS[l]['dt'] * 1e3:g} ns): inflation {prep.get('t_inflate') or T_INFLATE[l]:g} us, compression to 22% "
                f"strain, breathing 10 us; LAMMPS wall time of these runs {run.seconds - s0:.0f} s")
         ctx["save"](e)             # partial results reach the report
     done = sorted(got)
@@ -621,7 +642,7 @@ def case_resolution(run, level, ctx):
            f"Compression at 364 kPa and 0.5 m/s, forces averaged over |eps - eps_i| < {half:g} at "
            "every level (the coarsest level's window of case 5), the membrane model over the same "
            "records; breathing of the physical stiff cell (c = 264.6 m/s), the two strongest peaks.")
-    model, _, _ = case5_protocol(run.wall, levels[0])
+    model, _, _, _ = case5_protocol(run.wall, levels[0])
     if model:
         e.note("The compressions use case 5's wall and contact for this wall (tension-field element, "
                f"f0 x {MEMBRANE_CASE5['f0_scale']:g} at every level; cases.MEMBRANE_CASE5) at the "

@@ -206,13 +206,14 @@ class Runner:
                  out=f"inflate-{tag}.dat", restart_out=f"inflated-{tag}.restart", wall=wall, **mv)
         return f"inflated-{tag}.restart", f"inflate-{tag}.dat", nw, nf
 
-    def turgid(self, level, P, wall=None, model=None, name=""):
+    def turgid(self, level, P, wall=None, model=None, name="", t_inflate=None, t_settle=None):
         """The stiff cell at turgor P (kPa) as the package makes one (lammps-inputs/in.turgor):
         inflated to the paper's 364 kPa, then brought to P by osmosis. A cell pumped up directly
         to a low turgor is still taking in water after tens of us (docs/membrane.rst). Returns
         (restart file, record of its last stage: inflate-*.dat or settle-*.dat, wall nodes,
-        fluid particles)."""
-        restart, infl, nw, nf = self.inflate(level, STIFF["P"], wall=wall, model=model, name=name)
+        fluid particles). t_inflate, t_settle: the stages' times in us (T_INFLATE, T_SETTLE)."""
+        restart, infl, nw, nf = self.inflate(level, STIFF["P"], t_us=t_inflate, wall=wall,
+                                             model=model, name=name)
         if P == STIFF["P"]:
             return restart, infl, nw, nf
         wall = wall or self.wall
@@ -221,7 +222,7 @@ class Runner:
         dt = mv.pop("dt")       # in.turgor's step is dtset
         self.lmp("in.turgor", f"log.settle-{tag}", outputs=(f"settle-{tag}.dat", f"settled-{tag}.restart"),
                  dir=INPUTS, restart=restart, turgor=P, compress=0, dtset=dt,
-                 nsettle=int(round(T_SETTLE[level] / dt)),
+                 nsettle=int(round((t_settle or T_SETTLE[level]) / dt)),
                  setout=f"settle-{tag}.dat", settled=f"settled-{tag}.restart", wall=wall, **mv)
         return f"settled-{tag}.restart", f"settle-{tag}.dat", nw, nf
 
