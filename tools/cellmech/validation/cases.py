@@ -575,9 +575,9 @@ def case_resolution(run, level, ctx):
     half = window_half(min(levels))
     for l in levels:            # any order (STUDY_LEVELS); the analysis sorts by level
         s0 = run.seconds
-        # case 5's model of the wall and contact, at the paper's plate speed (the level-5 cell at
-        # case 5's slower plates would cost hours; at 364 kPa the speed moves the force at 10-20%
-        # strain by about 1%, docs/membrane.rst)
+        # case 5's model of the wall and contact and its cells at rest, at the paper's plate speed
+        # (the level-5 cell at case 5's slower plates would cost hours; at level 4 and 364 kPa the
+        # 0.5 m/s plates add 1.6-1.8% to the force at 10-20% strain, docs/membrane.rst)
         model, name, _, prep = case5_protocol(run.wall, l)
         try:
             eps, F, infl, nw, nf = compress(run, l, STIFF["P"], model=model, name=name, prep=prep)
