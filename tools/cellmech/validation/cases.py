@@ -534,8 +534,10 @@ def case_compression(run, level, ctx):
                f"({MEMBRANE_CASE5['f0_scale']:g} x the level's): the model's contents have the "
                f"Tait fluid's compressibility up to the wall, the paper's contact layer is about "
                f"4.5 x as compliant at level 4; plates at {vplate:g} m/s: the low-turgor force at small "
-               f"strain falls with the speed (30 kPa, 5% strain, level 4: +10.1% at 0.5, +2.4% at "
-               f"0.125, +0.6% at 0.0625 m/s). The tethers keep the paper's contact and 0.5 m/s.")
+               f"strain falls with the speed (30 kPa, 5% strain, level 4, on cells inflated and "
+               f"settled for 20 us: +10.1% at 0.5, +2.4% at 0.125, +0.6% at 0.0625 m/s); cells "
+               f"at rest: inflated for {prep['t_inflate']:g} us and settled for "
+               f"{prep['t_settle']:g} us, Young-Laplace being a statement about equilibrium. The tethers keep the paper's contact and 0.5 m/s.")
     e.note(f"Plate speed {vplate:g} m/s. Forces are the mean of both plates, averaged over "
            f"|eps - eps_i| < {half:g}: the wall meets a plate ring of nodes by ring, which steps "
            f"the raw curve. The membrane model is averaged over the same records (its force at "
