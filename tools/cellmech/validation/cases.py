@@ -111,8 +111,8 @@ def turgid_state(run, rec):
 #     speed, +10.1% at 0.5 m/s, +2.4% at 0.125 and +0.6% at 0.0625 (+1.5% at 0.03125, within
 #     the microstates' spread; the paper squeezed at 0.002 m/s): plates at 0.0625 m/s;
 #   - its cell is at rest: Young-Laplace is a statement about equilibrium, and a turgid cell goes
-#     on creeping long after its turgor is reached (the fluid packs closer to the wall, under
-#     osmosis at the set turgor). At level 4 F_eq / (P pi R^2) - 1 goes -1.05% (inflated 20 us),
+#     on creeping long after its turgor is reached (its fluid particles rearrange under the
+#     osmosis that holds each at the set turgor, the enclosed volume steady). At level 4 F_eq / (P pi R^2) - 1 goes -1.05% (inflated 20 us),
 #     -0.58% (80 us), -0.49% (320 us), its mass steady to 2e-5 from 80 us on; a 3 kPa cell let
 #     down from the 20-us cell +0.95% after 20 us of settling, +0.12% after 84, -0.20% after 260
 #     (docs/membrane.rst, "Young-Laplace"). Level 3 is steady from 60 us on: inflated 80 us,
