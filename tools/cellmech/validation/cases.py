@@ -8,8 +8,8 @@ import re
 
 import numpy as np
 
-from .common import (C_PHYS, INPUTS, LEVELS, M_WALL, R0, RHO0, SOFT, STIFF, T_INFLATE, T_SETTLE,
-                     model_vars, resolution, run_vars)
+from .common import (C_PHYS, INPUTS, LEVELS, M_WALL, R0, RHO0, SOFT, STIFF, model_vars,
+                     prep_times, resolution, run_vars)
 from . import analysis
 from . import bending
 from . import references as ref
@@ -518,8 +518,7 @@ def case_compression(run, level, ctx):
             "inward between the discrete nodes: the wall loses more volume than its fluid. Both "
             "are of the size of r0 and the node spacing and shrink with the level; they matter "
             "where the plate force comes from the volume the wall must hold, at low turgor.")
-    t_inflate = prep.get("t_inflate") or T_INFLATE[level]
-    t_settle = prep.get("t_settle") or T_SETTLE[level]
+    t_inflate, t_settle = prep_times(level, **prep)
     e.note(f"Turgid cells: 364 kPa by osmotic inflation (in.inflate, {t_inflate:g} us); "
            + ", ".join(f"{P:g}" for P in settled) + f" kPa brought down from it by osmosis and "
            f"settled for {t_settle:g} us (in.turgor, as the paper's turgor series in "
@@ -608,7 +607,7 @@ def case_resolution(run, level, ctx):
         e.note(f"level {l}: fluid spacing dx = {dx:.3f} um, smoothing length s = {LEVELS[l]['s']:g} um, "
                f"s/dx = {LEVELS[l]['s'] / dx:.3f}")
         e.note(f"level {l} ({10 * 4 ** l + 2} wall nodes, {nf} fluid particles, dt = "
-               f"{LEVELS[l]['dt'] * 1e3:g} ns): inflation {prep.get('t_inflate') or T_INFLATE[l]:g} us, compression to 22% "
+               f"{LEVELS[l]['dt'] * 1e3:g} ns): inflation {prep_times(l, **prep)[0]:g} us, compression to 22% "
                f"strain, breathing 10 us; LAMMPS wall time of these runs {run.seconds - s0:.0f} s")
         ctx["save"](e)             # partial results reach the report
     done = sorted(got)

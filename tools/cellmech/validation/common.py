@@ -33,6 +33,12 @@ T_INFLATE = {3: 20.0, 4: 20.0, 5: 10.0}
 # 20 us, 0.6% after 40 and 0.4% after 60 us (its mass still creeping by 1e-4 per 4 us)
 T_SETTLE = {3: 40.0, 4: 20.0, 5: 20.0}
 
+
+def prep_times(level, t_inflate=None, t_settle=None):
+    """(inflation, settling) time in us of a turgid cell at `level`: the given ones, else the
+    level's T_INFLATE and T_SETTLE."""
+    return t_inflate or T_INFLATE[level], t_settle or T_SETTLE[level]
+
 # the stiff cell of Table I (docs/model.md section 3.1), units micro: from cell-model.lmp and params
 _T = params.table()
 R0, M_WALL, RHO0, C_PHYS = params.CELL["R"], params.CELL["M_wall"], _T["rho0"], _T["c"]
@@ -200,7 +206,7 @@ class Runner:
         data, nw, nf = self.cell(level, wall)
         tag = f"L{level}-P{P:g}-c{c:g}" + ("" if wall == "tether" else f"-{wall}") + name
         mv = run_vars(level, model)
-        nsteps = int(round((t_us or T_INFLATE[level]) / mv["dt"]))
+        nsteps = int(round(prep_times(level, t_inflate=t_us)[0] / mv["dt"]))
         self.lmp("in.inflate", f"log.inflate-{tag}", outputs=(f"inflate-{tag}.dat", f"inflated-{tag}.restart"),
                  dir=INPUTS, data=data, Pi=-P, c=c, nsteps=nsteps, every=nsteps // 20,
                  out=f"inflate-{tag}.dat", restart_out=f"inflated-{tag}.restart", wall=wall, **mv)
@@ -222,7 +228,7 @@ class Runner:
         dt = mv.pop("dt")       # in.turgor's step is dtset
         self.lmp("in.turgor", f"log.settle-{tag}", outputs=(f"settle-{tag}.dat", f"settled-{tag}.restart"),
                  dir=INPUTS, restart=restart, turgor=P, compress=0, dtset=dt,
-                 nsettle=int(round((t_settle or T_SETTLE[level]) / dt)),
+                 nsettle=int(round(prep_times(level, t_settle=t_settle)[1] / dt)),
                  setout=f"settle-{tag}.dat", settled=f"settled-{tag}.restart", wall=wall, **mv)
         return f"settled-{tag}.restart", f"settle-{tag}.dat", nw, nf
 
