@@ -38,6 +38,7 @@ Usage:
 import argparse
 import math
 import os
+import re
 import sys
 
 import numpy as np
@@ -50,6 +51,11 @@ from . import params
 # before any work instead of filling the memory until the kernel kills the process. It is 80 times
 # the paper's finest cell (10242 wall nodes + 14000 fluid particles).
 MAX_PARTICLES = 2_000_000
+# Bounds on the tissue's iterations: Lloyd's iterations converge in tens (the seeds' centroids move
+# by less than 1% of a cell after 20 on a random block) and smoothing in hundreds; a sharpness
+# beyond 1000 is the polyhedron itself to 0.1% (an edge is pulled in by 2^(-1/p)). A larger value
+# is a typo that would run for hours.
+MAX_LLOYD, MAX_SMOOTH, MAX_SHARPNESS = 100, 10_000, 1000.0
 
 
 def fail(what, msg):
@@ -61,14 +67,20 @@ def fail(what, msg):
 class Parser(argparse.ArgumentParser):
     """argparse that reports a bad argument in one line (without the usage block)."""
 
+    def __init__(self, *a, **k):
+        super().__init__(*a, **k)
+        # argparse takes '-1e9' for an option (its pattern knows '-1' and '-1.5' only), so
+        # '--remove-box -1e9 ...' read as a missing value
+        self._negative_number_matcher = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
+
     def error(self, message):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def number(above=None, minimum=None, below=None):
+def number(above=None, minimum=None, below=None, maximum=None):
     """argparse type: a finite float with bounds (nan and inf pass float() but no geometry)."""
-    cond = "".join(f" {op} {v:g}" for op, v in ((">", above), (">=", minimum), ("<", below))
-                   if v is not None)
+    cond = " and".join(f" {op} {v:g}" for op, v in ((">", above), (">=", minimum), ("<", below),
+                                                    ("<=", maximum)) if v is not None)
 
     def parse(text):
         try:
@@ -76,7 +88,7 @@ def number(above=None, minimum=None, below=None):
         except ValueError:
             v = math.nan
         if not (math.isfinite(v) and (above is None or v > above) and (minimum is None or v >= minimum)
-                and (below is None or v < below)):
+                and (below is None or v < below) and (maximum is None or v <= maximum)):
             raise argparse.ArgumentTypeError(f"expected a finite number{cond}, got '{text}'")
         return v
     return parse
@@ -436,6 +448,13 @@ LATTICES = {  # basis (in lattice constants) and repeat vector of each seed latt
 }
 
 
+def progress(ncell, what, k, n):
+    """A line on stderr every tenth of a long stage (a block of more than 100 cells): a large
+    tissue takes minutes, and a silent generator looks hung."""
+    if ncell > 100 and (k == n or k % max(1, n // 10) == 0):
+        print(f"cellgen.py tissue: {what}", file=sys.stderr, flush=True)
+
+
 def tfail(msg):
     fail("tissue", msg)
 
@@ -493,7 +512,7 @@ def read_centres(path):
     return rows[:, :3], (rows[:, 3] if withr else None)
 
 
-def power_cells(seeds, radii, lo, hi):
+def power_cells(seeds, radii, lo, hi, stage="the cells' polyhedra"):
     """Laguerre (power) cells of the seeds with weights radii^2, clipped by the box [lo, hi].
 
     Returns per cell: dict(normals, offsets, nbr) of its faces n.x <= o (nbr: the cell across, or
@@ -510,6 +529,7 @@ def power_cells(seeds, radii, lo, hi):
         near = cKDTree(seeds).query(seeds, k=61)[1][:, 1:]
     cells = []
     for i in range(n):
+        progress(n, f"{stage}: {i + 1} of {n}", i + 1, n)
         cand = np.delete(np.arange(n), i) if near is None else near[i]
         diff = seeds[cand] - seeds[i]
         dist = np.linalg.norm(diff, axis=1)
@@ -530,30 +550,62 @@ def power_cells(seeds, radii, lo, hi):
         # volume and centroid from the tetrahedra (interior point, hull facet)
         a, b, c = (verts[hull.simplices[:, k]] - lp.x[:3] for k in range(3))
         vt = np.abs(np.einsum("ij,ij->i", a, np.cross(b, c))) / 6.0
-        centroid = lp.x[:3] + (vt[:, None] * (a + b + c)).sum(0) / (4.0 * vt.sum())
+        g = (vt[:, None] * (a + b + c)).sum(0) / (4.0 * vt.sum())
+        # second moment about the centroid: a tetrahedron (0, a, b, c) contributes
+        # V/20 (a a^T + b b^T + c c^T + (a+b+c)(a+b+c)^T) about its vertex 0
+        sm = sum(np.einsum("t,ti,tj->ij", vt, v, v) for v in (a, b, c, a + b + c)) / 20.0
+        moment = sm / vt.sum() - np.outer(g, g)
         # a plane is a face when the vertices on it span an area (not an edge or a corner)
         on = np.abs(verts @ nrm.T - off) < 1e-9 * scale
         active = np.zeros(len(nrm), bool)
+        area = np.zeros(len(nrm))
         for k in np.nonzero(on.sum(0) >= 3)[0]:
             v = verts[on[:, k]]
             active[k] = np.linalg.svd(v - v.mean(0), compute_uv=False)[1] > 1e-6 * scale
+            if active[k]:   # the face polygon's area, in the plane's own 2-D coordinates
+                e = np.linalg.svd(v - v.mean(0))[2][:2]
+                area[k] = ConvexHull((v - v.mean(0)) @ e.T).volume
         cells.append(dict(normals=nrm[active], offsets=off[active], nbr=nbr[active],
-                          volume=float(vt.sum()), centroid=centroid, inradius=float(lp.x[3])))
+                          face_area=area[active], volume=float(vt.sum()), centroid=lp.x[:3] + g,
+                          moment=moment, inradius=float(lp.x[3])))
     return cells
 
 
-def gauge_radius(u, normals, depth, p, dome=None):
-    """Radial gauge of the rounded polyhedron: r(u) = [sum_k max(0, u.n_k/d_k)^p + R^-p]^(-1/p).
+def gauge_radius(u, normals, depth, p, free=None):
+    """Radial gauge of the rounded polyhedron: r(u) = [sum_k max(0, u.n_k/d_k)^p + w(u) R(u)^-p]^(-1/p).
 
-    u (C, V, 3) unit directions, normals (C, K, 3), depth (C, K) > 0 (padding: normal 0); dome (C,)
-    the radius R of a sphere about the centre that bounds the cell where it has no neighbour (inf:
-    none); scaled by the nearest plane's depth so the powers stay within range."""
-    dmin = np.minimum(depth.min(axis=1), dome if dome is not None else np.inf)[:, None, None]
-    t = np.maximum(np.einsum("cvj,ckj->cvk", u, normals) * (dmin / depth[:, None, :]), 0.0)
-    tp = np.sum(t ** p, axis=2)
-    if dome is not None:
-        tp = tp + (dmin[:, :, 0] / dome[:, None]) ** p
-    return dmin[:, :, 0] * tp ** (-1.0 / p)
+    u (C, V, 3) unit directions; normals (C, K, 3), depth (C, K) > 0 of the faces shared with a
+    neighbour (padding: normal 0). free: None (the faces are all there is), or (fnormals (C, F, 3),
+    fdepth (C, F), metric (C, 3, 3)) of the faces without a neighbour and the dome, the ellipsoid
+    x^T M x = 1 about the centre (R(u) = (u^T M u)^-1/2). The dome bounds a cell only towards its
+    free faces: w(u) = sum_free t^p / sum_all t^p is 1 where a free face is the nearest plane and 0
+    where a shared face is, so shared faces stay flat out to their edges. Sums of powers in log
+    space (log-sum-exp): t^p underflows for a sharpness of a few thousand."""
+    dmin = depth.min(axis=1)
+    if free is not None:
+        dmin = np.minimum(dmin, free[1].min(axis=1))
+    dmin = dmin[:, None, None]
+
+    def log_powers(nrm, dep):   # p log(t dmin), -inf where u faces away from the plane
+        t = np.einsum("cvj,ckj->cvk", u, nrm) * (dmin / dep[:, None, :])
+        with np.errstate(divide="ignore"):
+            return p * np.log(np.maximum(t, 0.0))
+
+    def lse(x, axis=-1):
+        m = np.max(x, axis=axis, keepdims=True)
+        m = np.where(np.isfinite(m), m, 0.0)
+        with np.errstate(divide="ignore"):
+            return (m + np.log(np.sum(np.exp(x - m), axis=axis, keepdims=True))).squeeze(axis)
+
+    shared = log_powers(normals, depth)
+    total = lse(shared)
+    if free is not None:
+        fnormals, fdepth, metric = free
+        lfree = log_powers(fnormals, fdepth)
+        lw = lse(lfree) - lse(np.concatenate([shared, lfree], axis=2))
+        ldome = 0.5 * p * np.log(np.einsum("cvi,cij,cvj->cv", u, metric, u) * dmin[:, :, 0] ** 2)
+        total = lse(np.stack([total, np.where(np.isfinite(lw), lw + ldome, -np.inf)], -1))
+    return dmin[:, :, 0] * np.exp(-total / p)
 
 
 def wall_quality(x, tri):
@@ -567,6 +619,30 @@ def wall_quality(x, tri):
     area = 0.5 * np.linalg.norm(np.cross(e[0], -e[2]), axis=2)
     bary = np.linalg.norm((a + b + c) / 3.0 - b, axis=2)
     return area, ang, L, bary
+
+
+def territory_volumes(cells, centres, normals, depth, free, level=5, chunk=16):
+    """Per cell the volume of its territory: the polyhedron where it has neighbours, the dome of
+    --surface round beyond its free faces (the gauge without gap at the largest sharpness, on a
+    fine icosphere; a cell without free faces is its polyhedron, exactly)."""
+    vol = np.array([c["volume"] for c in cells])
+    if free is None:
+        return vol
+    unit, tri, _ = icosphere(level)
+    rounded = np.nonzero(np.isfinite(free[1]).any(axis=1))[0]
+    for k in range(0, len(rounded), chunk):   # in chunks: the table is cells x directions x faces
+        sel = rounded[k:k + chunk]
+        u = np.broadcast_to(unit, (len(sel), len(unit), 3))
+        r = gauge_radius(u, normals[sel], depth[sel], MAX_SHARPNESS,
+                         tuple(f[sel] for f in free))
+        vol[sel] = mesh_volumes(u * r[..., None], np.zeros((len(sel), 3)), tri)
+    return vol
+
+
+def mesh_volumes(x, centres, tri):
+    """Volume enclosed by each wall x (C, V, 3), from the tetrahedra (centre, triangle)."""
+    a, b, c = (x[:, tri[:, k]] - centres[:, None, :] for k in range(3))
+    return np.einsum("ctj,ctj->c", a, np.cross(b, c)) / 6.0
 
 
 def check_walls(x, centres, tri, edges):
@@ -634,6 +710,38 @@ def lamella_bonds(x, mol, cutoff):
     return np.unique(pairs, axis=0) if len(pairs) else np.zeros((0, 2), int)
 
 
+def unglued_faces(cells, pairs):
+    """The faces of the Voronoi/Laguerre diagram that got no lamella bond: (i, j, face area)."""
+    out = []
+    for i, c in enumerate(cells):
+        for j, a in zip(c["nbr"], c["face_area"]):
+            if i < j and (i, j) not in pairs:
+                out.append((i, int(j), float(a)))
+    return out
+
+
+def write_lengths(path, what, level, reach, special):
+    """The model lengths of the data file's level, as the LAMMPS include the inputs read before
+    their own defaults (in.tissue-inflate: include ${data}.lmp): a coarse tissue run with the
+    paper's lengths holds neither its fluid nor its turgor. A -var on the command line still wins."""
+    lines = [f"# written by cellgen.py {what} with {os.path.basename(path)[:-4]}: the model lengths of "
+             f"its wall level {level}"]
+    if level in params.LEVELS:
+        row = params.LEVELS[level]
+        lines.append("# from the level table (tools/cellmech/params.py LEVELS)")
+        for k, note in (("s", "smoothing length, um"), ("r0", "fluid-wall contact distance, um"),
+                        ("f0", "fluid-wall 8-4 strength, nN um"), ("dt", "time step, us")):
+            lines.append(f"variable {k:8s} index {row[k]:<10g} # {note}")
+        reach = max(reach, row["reach"])
+    else:
+        lines.append(f"# level {level} has no row in the level table (levels {', '.join(map(str, params.LEVELS))}):"
+                     " give -var s r0 f0 dt")
+    lines.append(f"variable {'reach':8s} index {reach:<10g} # cell/virtual reach, um (>= the mesh's)")
+    lines.append(f"variable {'special':8s} index {special:<10d} # read_data extra/special/per/atom")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
 def build_tissue(args):
     from scipy import sparse
     rng = np.random.default_rng(args.seed)
@@ -685,14 +793,16 @@ def build_tissue(args):
     seeds, lo, hi = seeds * ell, lo * ell, hi * ell
     radii = np.zeros(len(seeds)) if radii is None else radii
     ncell = len(seeds)
-    for _ in range(args.lloyd):
-        seeds = np.array([c["centroid"] for c in power_cells(seeds, radii, lo, hi)])
+    for it in range(args.lloyd):
+        seeds = np.array([c["centroid"] for c in power_cells(
+            seeds, radii, lo, hi, stage=f"Lloyd iteration {it + 1} of {args.lloyd}")])
     if ncell > 1:
         from scipy.spatial import cKDTree
         dd, jj = cKDTree(seeds).query(seeds, k=2)
         k = int(np.argmin(dd[:, 1]))
+        other = jj[k, 1] if jj[k, 1] != k else jj[k, 0]   # two equal seeds: either may come first
         if dd[k, 1] < 2 * args.gap:
-            tfail(f"seeds of cells {k + 1} and {jj[k, 1] + 1} are {dd[k, 1]:.4g} apart, closer than "
+            tfail(f"seeds of cells {min(k, other) + 1} and {max(k, other) + 1} are {dd[k, 1]:.4g} apart, closer than "
                   f"twice the gap ({2 * args.gap:g}): move them or lower --gap")
     cells = power_cells(seeds, radii, lo, hi)
     if args.remove_box:
@@ -716,35 +826,69 @@ def build_tissue(args):
     unit, tri, edges = icosphere(args.level)
     nv, kmax = len(unit), max(len(c["normals"]) for c in cells)
     centres = np.array([c["centroid"] for c in cells])
-    normals, depth = np.zeros((ncell, kmax, 3)), np.full((ncell, kmax), np.inf)
     # The tissue's free surface. "cut": the block's faces are flat, as a sample cut from a fruit.
-    # "round" (default): a cell without a neighbour on a side is bounded there by a sphere of its
-    # equivalent radius about its centre instead: a dome that turgor stretches as much as the wall
-    # of a single cell. A flat free face cannot carry a pressure without bulging, and inflation
+    # "round" (default): towards its free faces (no neighbour there) a cell is bounded by a dome,
+    # its inertia ellipsoid (the solid ellipsoid with the polyhedron's second moments, about its
+    # centroid: a cube's is the sphere of radius 0.645 a, an elongated cell's is elongated alike),
+    # scaled by --dome. A flat free face cannot carry a pressure without bulging, and inflation
     # would first have to stretch it into a dome (to 16% for a 48 um face at 364 kPa in the
     # stiff wall, four times the tethers' critical stretch of 4%): the outer walls would start a
-    # compression already torn. Faces between cells are balanced by the neighbour's turgor and
-    # stay flat.
-    dome = np.full(ncell, np.inf)
+    # compression already torn. The dome acts only where a free face is the nearest plane
+    # (gauge_radius): faces between cells, balanced by the neighbour's turgor, stay flat to their
+    # edges and glued over their whole area.
+    normals, depth = np.zeros((ncell, kmax, 3)), np.full((ncell, kmax), np.inf)
+    fnormals, fdepth = np.zeros((ncell, kmax, 3)), np.full((ncell, kmax), np.inf)
+    metric = np.zeros((ncell, 3, 3))
+    rounded = False
     for i, c in enumerate(cells):
-        keep = np.ones(len(c["normals"]), bool)
+        shared = np.ones(len(c["normals"]), bool)
         if args.surface == "round" and (c["nbr"] < 0).any():
-            keep = c["nbr"] >= 0
-            dome[i] = args.dome * (3.0 * c["volume"] / (4.0 * math.pi)) ** (1.0 / 3.0)
-        k = int(keep.sum())
-        normals[i, :k] = c["normals"][keep]
-        depth[i, :k] = c["offsets"][keep] - c["normals"][keep] @ centres[i] - 0.5 * args.gap
+            shared = c["nbr"] >= 0
+            f = int((~shared).sum())
+            fnormals[i, :f] = c["normals"][~shared]
+            fdepth[i, :f] = c["offsets"][~shared] - c["normals"][~shared] @ centres[i]
+            metric[i] = np.linalg.inv(5.0 * c["moment"]) / args.dome ** 2
+            rounded = True
+        k = int(shared.sum())
+        normals[i, :k] = c["normals"][shared]
+        depth[i, :k] = c["offsets"][shared] - c["normals"][shared] @ centres[i] - 0.5 * args.gap
         if k and depth[i, :k].min() <= 0:
             tfail(f"cell {i + 1} is thinner than the gap ({args.gap:g}) around its centroid "
                   f"{centres[i]}: lower --gap or spread the seeds")
-    p = args.sharpness
+    free = (fnormals, fdepth, metric) if rounded else None
 
-    def onto(x):  # radial projection onto the rounded cells
+    def onto(x, p):  # radial projection onto the rounded cells
         r = x - centres[:, None, :]
         u = r / np.linalg.norm(r, axis=2)[..., None]
-        return centres[:, None, :] + u * gauge_radius(u, normals, depth, p, dome)[..., None]
+        return centres[:, None, :] + u * gauge_radius(u, normals, depth, p, free)[..., None]
 
-    x = onto(np.broadcast_to(unit, (ncell, nv, 3)) + centres[:, None, :])
+    # the cells' polyhedra tile the block: the box less what --remove-box took out
+    block_volume = float(sum(c["volume"] for c in cells))
+    # the air is the space between the walls within the tissue: each cell's territory (its
+    # polyhedron, and where it is round its dome beyond the free faces) less its wall's volume
+    territory = territory_volumes(cells, centres, normals, depth + 0.5 * args.gap, free)
+    start = np.broadcast_to(unit, (ncell, nv, 3)) + centres[:, None, :]
+    p, porosity0 = args.sharpness, None
+    if args.air is not None:
+        # Intercellular air where it is in parenchyma: at the cells' edges and corners, with the
+        # faces between cells still in contact and glued. Rounder cells (a smaller sharpness p)
+        # leave more air; p is found by bisection in log p on the unsmoothed walls (smoothing
+        # moves nodes along the surface: the volume hardly changes), and a final uniform scaling
+        # of less than a percent makes the porosity exact. Shrinking every wall instead would pull
+        # the faces apart beyond the bond cutoff: no lamella at all.
+        def air_at(q):
+            return 1.0 - mesh_volumes(onto(start, q), centres, tri).sum() / territory.sum()
+        porosity0, most = air_at(args.sharpness), air_at(2.0)
+        if not porosity0 <= args.air <= most:
+            tfail(f"--air {args.air:g}: expected a porosity between {porosity0:.4f} (the block at "
+                  f"--sharpness {args.sharpness:g}) and {most:.4f} (the roundest cells, sharpness 2)"
+                  + ("; --surface cut leaves more room" if rounded else ""))
+        lo_p, hi_p = math.log(2.0), math.log(args.sharpness)
+        for _ in range(40):
+            mid = 0.5 * (lo_p + hi_p)
+            lo_p, hi_p = (mid, hi_p) if air_at(math.exp(mid)) > args.air else (lo_p, mid)
+        p = math.exp(0.5 * (lo_p + hi_p))
+    x = onto(start, p)
     deg = np.bincount(edges.ravel(), minlength=nv)
     inc = sparse.coo_matrix((np.ones(3 * len(tri)), (tri.T.ravel(), np.tile(np.arange(len(tri)), 3))),
                             shape=(nv, len(tri))).tocsr()
@@ -753,7 +897,7 @@ def build_tissue(args):
         out = m @ v.transpose(1, 0, 2).reshape(v.shape[1], -1)
         return out.reshape(nv, ncell, 3).transpose(1, 0, 2)
 
-    for _ in range(args.smooth):
+    for it in range(args.smooth):
         # tangential, area-weighted Laplacian step (towards the area-weighted mean of the node's
         # triangle centroids: evens out the triangle areas), then back onto the surface along the ray
         a, b, c = x[:, tri[:, 0]], x[:, tri[:, 1]], x[:, tri[:, 2]]
@@ -763,20 +907,17 @@ def build_tissue(args):
         vn /= np.linalg.norm(vn, axis=2)[..., None]
         step = per_node(inc, ar * (a + b + c) / 3.0) / per_node(inc, np.repeat(ar, 3, axis=2)) - x
         step -= np.einsum("cvj,cvj->cv", step, vn)[..., None] * vn
-        x = onto(x + 0.5 * step)
+        x = onto(x + 0.5 * step, p)
+        progress(ncell, f"smoothing the walls, {it + 1} of {args.smooth}", it + 1, args.smooth)
     vol = check_walls(x, centres, tri, edges)
     box_volume = float(np.prod(hi - lo))
-    # the cells' polyhedra tile the block: the box less what --remove-box took out
-    block_volume = float(sum(c["volume"] for c in cells))
-    porosity0 = 1.0 - vol.sum() / block_volume
     if args.air is not None:
-        if not porosity0 <= args.air < 1:
-            tfail(f"--air must be between the block's porosity without air ({porosity0:.4f}) and 1, "
-                  f"got {args.air:g}")
-        s = ((1.0 - args.air) / (1.0 - porosity0)) ** (1.0 / 3.0)
-        x = centres[:, None, :] + s * (x - centres[:, None, :])
-        vol = vol * s ** 3
-    porosity = 1.0 - vol.sum() / block_volume
+        sc = ((1.0 - args.air) * territory.sum() / vol.sum()) ** (1.0 / 3.0)
+        x = centres[:, None, :] + sc * (x - centres[:, None, :])
+        vol = vol * sc ** 3
+    else:
+        porosity0 = 1.0 - vol.sum() / territory.sum()
+    porosity = 1.0 - vol.sum() / territory.sum()
     area_t, ang, elen, bary = wall_quality(x, tri)
     if ang.min() < args.min_angle:
         k = int(np.argmin(ang.min(axis=(1, 2))))
@@ -824,6 +965,14 @@ def build_tissue(args):
     for i, j in pairs:
         nbrs[i].add(j)
         nbrs[j].add(i)
+    unglued = unglued_faces(cells, pairs)
+    for i, j, a in unglued[:10]:
+        print(f"cellgen.py tissue: warning: cells {i + 1} and {j + 1} share a face of {a:.4g} um^2 in "
+              f"the diagram but no lamella bond (walls farther apart than --bond-cutoff {cutoff:g}, or "
+              f"the face smaller than a wall triangle)", file=sys.stderr)
+    if len(unglued) > 10:
+        print(f"cellgen.py tissue: warning: {len(unglued) - 10} more faces without a lamella bond",
+              file=sys.stderr)
     # ---- special neighbours, as LAMMPS counts them at read_data (1-2, 1-3, 1-4; unique)
     glue = not args.no_glue
     allb = np.vstack([(edges[None] + (np.arange(ncell) * nv)[:, None, None]).reshape(-1, 2)]
@@ -868,6 +1017,7 @@ def build_tissue(args):
              f"extra/special/per/atom {K}; pair_style cell/virtual reach >= {reach:g}; units micro")
     write_data(args.output, title, box, atoms, bonds, angles, [m_wall, m_fluid], pts, rho,
                bond_types=(2, btype), rmass=rmass, alam=alam_atom, bending=args.bending)
+    write_lengths(args.output + ".lmp", "tissue", args.level, reach, K)
     # ---- statistics
     nfl = np.array([len(f) for f in fluid])
     qual = dict(min_angle_deg=float(ang.min()), min_edge=float(elen.min()), max_edge=float(elen.max()),
@@ -877,7 +1027,7 @@ def build_tissue(args):
         sharpness=p, bond_cutoff=cutoff, glue=glue, fluid_spacing=spacing, inset=inset,
         fluid_mass=m_fluid, rho0=args.rho0, wall_areal_density=areal,
         tissue_box=[float(v) for v in np.ravel(np.column_stack([lo, hi]))], box_volume=box_volume,
-        block_volume=block_volume,
+        block_volume=block_volume, territory_volume=float(territory.sum()),
         porosity=float(porosity), porosity_without_air=float(porosity0),
         volume_mean=float(vol.mean()), volume_rel_spread=float(vol.std() / vol.mean()),
         faces_mean=float(np.mean([len(c["normals"]) for c in cells])),
@@ -889,7 +1039,8 @@ def build_tissue(args):
                    neighbours=sorted(int(j) + 1 for j in nbrs[i]), nodes=nv, fluid=int(nfl[i]))
               for i in range(ncell)],
         pairs=[dict(cells=[int(i) + 1, int(j) + 1], bonds=n, glued_area=float(ab))
-               for (i, j), (n, ab) in sorted(pairs.items())])
+               for (i, j), (n, ab) in sorted(pairs.items())],
+        unglued_faces=[dict(cells=[i + 1, j + 1], face_area=a) for i, j, a in unglued])
     import json
     import os
     path = args.stats if args.stats else os.path.splitext(args.output)[0] + ".json"
@@ -899,7 +1050,9 @@ def build_tissue(args):
     print(f"cells {ncell}: volume mean {vol.mean():.6g} (spread {vol.std() / vol.mean():.3%}), "
           f"wall area mean {wall_area.mean():.6g}, faces/cell {stats['faces_mean']:.3g}, "
           f"neighbours/cell {stats['neighbours_mean']:.3g}")
-    print(f"porosity {porosity:.4f} (without air {porosity0:.4f}), tissue box volume {box_volume:.6g}")
+    print(f"porosity {porosity:.4f} (without air {porosity0:.4f}"
+          + (f"; --air rounds the cells to sharpness {p:.4g}" if args.air is not None else "")
+          + f"), tissue box volume {box_volume:.6g}")
     print(f"fluid: spacing {spacing:.6g}, {nfl.sum()} particles ({nfl.min()}..{nfl.max()} per cell), "
           f"mass {m_fluid:.6g}; wall node mass mean {m_wall:.6g} (areal density x tributary area)")
     print(f"lamella: {stats['lamella_bonds']} bonds (cutoff {cutoff:g}), {len(pairs)} "
@@ -909,7 +1062,7 @@ def build_tissue(args):
           f"{qual['max_edge']:.4g}, max barycentre-node distance {reach_need:.4g} -> "
           f"pair_style cell/virtual reach >= {reach:g}")
     print(f"special neighbours: max {special} per atom; read_data ... extra/special/per/atom {K}")
-    print(f"statistics: {path}")
+    print(f"statistics: {path}; model lengths of level {args.level}: {args.output}.lmp")
 
 
 def main(argv=None):
@@ -955,7 +1108,8 @@ def main(argv=None):
     r.add_argument("--spacing", type=number(above=0), help="lattice constant instead of --radius")
     t.add_argument("--size", type=number(above=0), nargs=3, metavar="L", help="--random: box LX LY LZ")
     t.add_argument("--min-dist", type=number(above=0), help="--random: minimum seed distance")
-    t.add_argument("--lloyd", type=whole(0), default=0, metavar="K", help="Lloyd iterations (default 0)")
+    t.add_argument("--lloyd", type=whole(0, MAX_LLOYD), default=0, metavar="K",
+                   help="Lloyd iterations (default 0)")
     t.add_argument("--seed", type=whole(0), default=1, help="random seed (default 1)")
     t.add_argument("--tissue-box", type=number(), nargs=6, metavar="X",
                    help="block that clips the cells: xlo xhi ylo yhi zlo zhi")
@@ -964,12 +1118,13 @@ def main(argv=None):
     t.add_argument("--elongate", type=number(above=0), nargs=3, metavar="F", help="stretch factors ax ay az")
     t.add_argument("--level", type=whole(0, 6), default=3, help="icosphere level of each wall (default 3)")
     t.add_argument("--gap", type=number(above=0), default=2.56, help="wall-wall gap (default 2.56 um)")
-    t.add_argument("--sharpness", type=number(minimum=2), default=16.0, help="edge rounding exponent p (16)")
+    t.add_argument("--sharpness", type=number(minimum=2, maximum=MAX_SHARPNESS), default=16.0,
+                   help="edge rounding exponent p (16)")
     t.add_argument("--surface", choices=("round", "cut"), default="round",
                    help="free surface of the block: domed cells (round) or flat faces (cut)")
     t.add_argument("--dome", type=number(above=0), default=1.0,
                    help="round surface: dome radius / the cell's equivalent radius (1.0)")
-    t.add_argument("--smooth", type=whole(0), default=100, help="tangential smoothing iterations (100)")
+    t.add_argument("--smooth", type=whole(0, MAX_SMOOTH), default=100, help="tangential smoothing iterations (100)")
     t.add_argument("--min-angle", type=number(minimum=0), default=20.0,
                    help="smallest triangle angle allowed (20)")
     t.add_argument("--air", "--porosity", type=number(), help="target porosity (intercellular air)")
@@ -988,7 +1143,12 @@ def main(argv=None):
         sp.add_argument("--bending", action="store_true",
                         help="also write the bending hinges (Dihedrals) for dihedral style cell/bending")
     args = p.parse_args(argv)
-    {"cell": build_cells, "sheet": build_sheet, "tissue": build_tissue}[args.what](args)
+    try:
+        {"cell": build_cells, "sheet": build_sheet, "tissue": build_tissue}[args.what](args)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # the summary piped into head: the files are written; no traceback for the closed pipe
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
 if __name__ == "__main__":
