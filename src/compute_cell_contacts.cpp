@@ -22,6 +22,12 @@
     11 distance between the two cell centres
    Bonds between atoms of two cells are lamella bonds; the contacts are
    the non-bonded wall-node pairs of pair cell/lj84's wall-wall cutoff.
+   Only atoms of the group count: a bond or a contact when both of its
+   atoms are in it, a node's area when it and the node of the other cell
+   that it touches or is glued to are. Debonded bonds are known per cell
+   pair only (fix cell_debonded), not per atom: they count when both
+   cells have a wall node in the group (group all: every one). The centres (column 11) are those
+   of the whole cells.
    The rows are summed over all ranks and are the same on every rank.
 ------------------------------------------------------------------------- */
 
@@ -138,6 +144,7 @@ void ComputeCellContacts::compute_array()
   double **x = atom->x;
   int *type = atom->type;
   tagint *molecule = atom->molecule;
+  int *mask = atom->mask;
 
   CellMech::CellIndex cells;
   cells.build(lmp);
@@ -181,6 +188,7 @@ void ComputeCellContacts::compute_array()
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int i1 = bondlist[n][0], i2 = bondlist[n][1], btype = bondlist[n][2];
     if (btype <= 0 || molecule[i1] == molecule[i2]) continue;
+    if (!(mask[i1] & groupbit) || !(mask[i2] & groupbit)) continue;
     Sums &s = row(molecule[i1], molecule[i2]);
     s[0] += 1.0;
     if (alam) s[1] += CellMech::lamella_area(alam, i1, i2);
@@ -200,13 +208,12 @@ void ComputeCellContacts::compute_array()
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int itype = type[i];
-    if (!(atom->mask[i] & groupbit) || nspecial[i][0] == 0 || (sph && sph->is_fluid(itype)))
-      continue;
+    if (!(mask[i] & groupbit) || nspecial[i][0] == 0 || (sph && sph->is_fluid(itype))) continue;
     std::set<tagint> touched;
     // glued: the other cells among its 1-2 neighbours
     for (int k = 0; k < nspecial[i][0]; k++) {
       const int j = atom->map(special[i][k]);
-      if (j >= 0 && molecule[j] != molecule[i]) touched.insert(molecule[j]);
+      if (j >= 0 && molecule[j] != molecule[i] && (mask[j] & groupbit)) touched.insert(molecule[j]);
     }
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -214,7 +221,8 @@ void ComputeCellContacts::compute_array()
       const double factor_lj = special_lj[sbmask(j)];
       j &= NEIGHMASK;
       const int jtype = type[j];
-      if (molecule[j] == molecule[i] || (sph && sph->is_fluid(jtype)) || nspecial[j][0] == 0)
+      if (molecule[j] == molecule[i] || !(mask[j] & groupbit) || (sph && sph->is_fluid(jtype)) ||
+          nspecial[j][0] == 0)
         continue;
       const int lo = MIN(itype, jtype), hi = MAX(itype, jtype);
       if (!contact->setflag[lo][hi]) continue;
@@ -268,12 +276,29 @@ void ComputeCellContacts::compute_array()
   }
 
   // debonded bonds: the per-cell-pair table of fix cell_debonded (cell i, cell j, bonds, area)
-  if (debonded && debonded->array_flag)
+  if (debonded && debonded->array_flag && debonded->size_array_rows > 0) {
+    // per slot: the cell has a wall node in the group (slot 0: none, or a cell no longer there).
+    // The table is the same on every rank, so every rank makes this reduction or none does; group
+    // all takes every row, as a cell whose atoms have all been deleted has none left to be in it
+    const bool all = (igroup == 0);
+    std::vector<int> mine_in(cells.size() + 1, 0), in_group(cells.size() + 1, 0);
+    if (!all) {
+      const CellMech::WallNodes wall_node(lmp);
+      for (int i = 0; i < nlocal; i++) {
+        const int m = cells.slot(molecule[i]);
+        if (m >= 1 && (mask[i] & groupbit) && wall_node(i)) mine_in[m] = 1;
+      }
+      MPI_Allreduce(mine_in.data(), in_group.data(), (int) in_group.size(), MPI_INT, MPI_MAX,
+                    world);
+    }
     for (int r = 0; r < debonded->size_array_rows; r++) {
-      auto &g = global_row((int) debonded->compute_array(r, 0), (int) debonded->compute_array(r, 1));
+      const int m1 = (int) debonded->compute_array(r, 0), m2 = (int) debonded->compute_array(r, 1);
+      if (!all && (!in_group[cells.slot(m1)] || !in_group[cells.slot(m2)])) continue;
+      auto &g = global_row(m1, m2);
       g[NDEBONDED] += debonded->compute_array(r, 2);
       g[DEBONDED_AREA] += debonded->compute_array(r, 3);
     }
+  }
 
   // normal components along the line of the centres, from the lower cell to the higher one
   for (auto &kv : rows) {

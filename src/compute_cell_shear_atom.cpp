@@ -7,15 +7,21 @@
                      + sum_j (m_j/rho_j) v_ji^a dW_ij/dx_i^b ),  v_ji = v_j - v_i
      tau_i = sqrt(tau_xy^2 + tau_xz^2 + tau_yz^2)
    Per-atom array: 1 tau, 2 tau_xy, 3 tau_xz, 4 tau_yz (pressure units), zero for non-fluid
-   atoms. A full neighbour list, built when the compute is invoked, keeps each particle's sum
-   local, so no reverse communication is needed. The mean over a region (the impact zone) is
-   `compute reduce/region ... ave c_ID[1]`.
+   atoms. The sums run over the particles pair cell/sph pairs a particle with: fluid of the same
+   cell (CellMech::same_cell), whatever its group. A full neighbour list, built when the compute
+   is invoked, keeps each particle's sum local, so no reverse communication is needed; the
+   velocities of the ghosts are sent anew, since LAMMPS last sent them after the first half of
+   the step's integration (comm_modify vel yes), half a step before the owners' at output. The
+   mean over a region (the impact zone) is `compute reduce/region ... ave c_ID[1]`.
 ------------------------------------------------------------------------- */
 
 #include "compute_cell_shear_atom.h"
 
 #include "atom.h"
+#include "cell_fields.h"
 #include "cell_physics.h"
+#include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -40,7 +46,7 @@ ComputeCellShearAtom::ComputeCellShearAtom(LAMMPS *_lmp, int narg, char **arg) :
                narg - 3);
   peratom_flag = 1;
   size_peratom_cols = 4;
-  comm_forward = 0;
+  comm_forward = 3;
 }
 
 ComputeCellShearAtom::~ComputeCellShearAtom()
@@ -72,12 +78,14 @@ void ComputeCellShearAtom::compute_peratom()
     array_atom = tau;
   }
   neighbor->build_one(list);
+  comm->forward_comm(this);
 
   double **x = atom->x;
   double **v = atom->v;
   double *rmass = atom->rmass;
   int *type = atom->type;
   int *mask = atom->mask;
+  const tagint *molecule = atom->molecule;
   const double *rho = sph->rho_array();
   int dim;
   auto mu = (double *) sph->extract("mu", dim);
@@ -95,7 +103,7 @@ void ComputeCellShearAtom::compute_peratom()
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const int jtype = type[j];
-      if (!sph->is_fluid(jtype)) continue;
+      if (!sph->is_fluid(jtype) || !CellMech::same_cell(molecule, i, j)) continue;
       const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
       const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
       const double smooth = s[itype][jtype];
@@ -112,6 +120,42 @@ void ComputeCellShearAtom::compute_peratom()
     tau[i][1] = txy;
     tau[i][2] = txz;
     tau[i][3] = tyz;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the owners' velocities to their ghosts; an image across a periodic boundary of a box that
+   fix deform remaps takes the box's velocity, as LAMMPS's own ghost velocities do
+------------------------------------------------------------------------- */
+
+int ComputeCellShearAtom::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  double dv[3] = {0.0, 0.0, 0.0};
+  if (pbc_flag && domain->deform_vremap) {
+    const double *h_rate = domain->h_rate;
+    dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
+    dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
+    dv[2] = pbc[2] * h_rate[2];
+  }
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int j = list[k];
+    const bool remap = pbc_flag && domain->deform_vremap && (mask[j] & domain->deform_groupbit);
+    for (int d = 0; d < 3; d++) buf[m++] = remap ? v[j][d] + dv[d] : v[j][d];
+  }
+  return m;
+}
+
+void ComputeCellShearAtom::unpack_forward_comm(int n, int first, double *buf)
+{
+  double **v = atom->v;
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    v[i][0] = buf[m++];
+    v[i][1] = buf[m++];
+    v[i][2] = buf[m++];
   }
 }
 

@@ -23,6 +23,8 @@ class ComputeCellShearAtom : public Compute {
   void init() override;
   void init_list(int, class NeighList *) override;
   void compute_peratom() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
 
  private:

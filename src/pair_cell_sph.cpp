@@ -89,9 +89,8 @@ PairCellSPH::~PairCellSPH()
 void PairCellSPH::find_candidates()
 {
   const int *const type = atom->type;
-  // the protoplasm of one cell never meets another cell's through SPH, even where two particles
-  // are within the kernel's support across two walls (a tissue): the walls between them are
-  // closed, so no pressure, viscosity or density rate may cross. One molecule ID per cell.
+  // the protoplasm of one cell never meets another cell's (CellMech::same_cell), even across two
+  // glued walls within the kernel's support
   const tagint *const molecule = atom->molecule;
   const int inum = list->inum;
   const int *const ilist = list->ilist;
@@ -114,11 +113,10 @@ void PairCellSPH::find_candidates()
       maxcand = MAX(ncand + jnum, 2 * maxcand);
       memory->grow(cand_j, maxcand, "pair:cand_j");
     }
-    const tagint moli = molecule ? molecule[i] : 0;
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       if (!fluid[type[j]]) continue;
-      if (molecule && molecule[j] != moli) continue;
+      if (!CellMech::same_cell(molecule, i, j)) continue;
       cand_j[ncand++] = j;
     }
   }
@@ -745,7 +743,7 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
                            double /*factor_lj*/, double &fforce)
 {
   // central (pressure) part only; the viscous force is not along r_ij
-  if (atom->molecule && atom->molecule[i] != atom->molecule[j]) {
+  if (!CellMech::same_cell(atom->molecule, i, j)) {
     fforce = 0.0;
     return 0.0;
   }
