@@ -321,14 +321,30 @@ inline double exchange_mass_step(double k, double dt, double psi_a, double psi_b
   return k * dt * (psi_a - psi_b) / (1.0 + k * dt * (dpsi_dM_a + dpsi_dM_b));
 }
 
-// Wall area of a cell open to the outside (Eq. W4): the current area A less the glued part, whose
-// rest area A_glued_ref (the lamella areas d_alam) is scaled by the wall's areal stretch A / A_ref
-// (A_ref the rest area of its triangles); never below zero.
+// Wall area of a cell open to the outside by Eq. W4's 'exposed unglued' (every space between cells
+// counts as outside): the current area A less the glued part, whose rest area A_glued_ref (the
+// lamella areas d_alam) is scaled by the wall's areal stretch A / A_ref (A_ref the rest area of its
+// triangles); never below zero.
 inline double exposed_area(double A, double A_ref, double A_glued_ref)
 {
   if (A_ref <= 0.0) return A;
   const double open = 1.0 - A_glued_ref / A_ref;
   return open > 0.0 ? A * open : 0.0;
+}
+
+// Whether a point at offset d from the centroid of a wall triangle (unit outward normal n, longest
+// edge h) lies in front of it, so that a wall through that point hides the triangle from the
+// outside (Eq. W4, exposed outside): on its outer side (d.n > 0) within 45 degrees of the normal,
+// or, close to the wall, within h of the normal line. The cone alone would miss a facing wall
+// nearer than its node spacing (the glued walls are 2.56 um apart, the coarse nodes 3.3-5.5 um):
+// the normal line crosses that wall inside one of its triangles, within h/sqrt(3) of a node.
+inline bool hides_triangle(const double *d, const double *n, double h)
+{
+  const double s = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+  if (s <= 0.0) return false;
+  const double lateral2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - s * s;
+  const double r = s > h ? s : h;
+  return lateral2 <= r * r;
 }
 
 /* ---------------------------------------------------------------------

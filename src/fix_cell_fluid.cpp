@@ -29,9 +29,10 @@
    their shared wall, k (psi_a - psi_b) with psi = P + Pi (Eqs. W2-W3),
    one mass per pair added to one cell and taken from the other so that
    the exchange conserves mass to round-off; and the outside reached only
-   through the exposed (not glued) wall (Eq. W4), at a water potential
-   psi_ext or at a set flux. Each cell's share is spread evenly over its
-   fluid particles, as Eq. 10's A_c / N_f does.
+   through the exposed wall (Eq. W4: neither glued nor facing another
+   cell's wall within a distance, or, as an explicit choice, not glued),
+   at a water potential psi_ext or at a set flux. Each cell's share is
+   spread evenly over its fluid particles, as Eq. 10's A_c / N_f does.
 ------------------------------------------------------------------------- */
 
 #include "fix_cell_fluid.h"
@@ -68,6 +69,11 @@ using namespace CellPhysics;
 
 namespace {
 enum { EXT_PSI, EXT_FLUX };
+enum { EXPOSE_OUTSIDE, EXPOSE_UNGLUED };
+// default of exposed outside, in Angstrom (10 um): wider than the voids at the rounded edges and
+// corners of a cellgen.py tissue (8 um would do at rest, unglued), so that a cell with no free face
+// has no exposed wall (docs/fix_cell_fluid.rst, *The outside*)
+constexpr double EXPOSE_DEPTH_ANGSTROM = 1.0e5;
 constexpr int NCOLS = 7;    // compute_array columns
 // restart tag of the format (tag, ncells, then ID, uptake, W0 per cell): not an integer, so it
 // cannot be mistaken for the cell count that opens the two earlier formats
@@ -82,9 +88,9 @@ constexpr double RESTART_TAG = -0.5;
 
 FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
     Fix(_lmp, narg, arg), Pi(0.0), Lp(0.0), solute(0), exchange(0), external(EXT_PSI),
-    ext_value(0.0), dt(0.0), ilevel_respa(0), ncells(0), area(nullptr), nfluid(nullptr),
-    nbroken(nullptr), flux_local(nullptr), flux_all(nullptr), flux_stale(1), sph(nullptr), iref(-1),
-    ialam(-1)
+    ext_value(0.0), expose(EXPOSE_OUTSIDE), expose_depth(EXPOSE_DEPTH_ANGSTROM * force->angstrom),
+    dt(0.0), ilevel_respa(0), ncells(0), area(nullptr), nfluid(nullptr), nbroken(nullptr),
+    flux_local(nullptr), flux_all(nullptr), flux_stale(1), sph(nullptr), iref(-1), ialam(-1)
 {
   if (narg < 7)
     error->all(FLERR,
@@ -106,6 +112,8 @@ FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
   parse_keyword(2, &arg[3]);
   parse_keyword(2, &arg[5]);
   for (int iarg = 7; iarg < narg;) iarg += parse_keyword(narg - iarg, &arg[iarg]);
+  in_command = false;
+  given.clear();
   if (!atom->molecule_flag)
     error->all(FLERR,
                "Fix cell/fluid requires molecule IDs (one per cell): use atom_style molecular");
@@ -120,6 +128,10 @@ FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
   size_array_cols = NCOLS;
   size_array_rows = 0;
   extarray = 0;
+  comm_forward = comm_reverse = 1;    // node_glued, at a neighbour-list build
+  // fix ave/time (mode vector) takes the number of rows when it is defined, usually before the
+  // first run: the cells present now size the vector and array (zero rows otherwise, all run long)
+  index_cells();
 }
 
 FixCellFluid::~FixCellFluid()
@@ -148,8 +160,16 @@ int FixCellFluid::modify_param(int narg, char **arg)
 }
 
 namespace {
+// utils::numeric's own error would not say which keyword, file or line the text came from
+void require_number(LAMMPS *lmp, const char *text, const std::string &name)
+{
+  if (!utils::is_double(text))
+    lmp->error->all(FLERR, "fix cell/fluid: {} must be a number, got '{}'", name, text);
+}
+
 double osmotic_value(LAMMPS *lmp, const char *text, const std::string &what)
 {
+  require_number(lmp, text, "osmotic potential Pi" + what);
   const double Pi = utils::numeric(FLERR, text, false, lmp);
   if (Pi > 0.0)
     lmp->error->all(FLERR,
@@ -161,6 +181,7 @@ double osmotic_value(LAMMPS *lmp, const char *text, const std::string &what)
 
 double conductivity_value(LAMMPS *lmp, const char *text, const std::string &what)
 {
+  require_number(lmp, text, "hydraulic conductivity Lp" + what);
   const double Lp = utils::numeric(FLERR, text, false, lmp);
   if (Lp < 0.0)
     lmp->error->all(FLERR, "fix cell/fluid: hydraulic conductivity Lp{} must be >= 0, got {}", what,
@@ -171,6 +192,10 @@ double conductivity_value(LAMMPS *lmp, const char *text, const std::string &what
 
 tagint cell_id(LAMMPS *lmp, const char *text, const std::string &where)
 {
+  if (!utils::is_integer(text))
+    lmp->error->all(FLERR,
+                    "fix cell/fluid {}: the cell (molecule ID) must be an integer >= 1, got '{}'",
+                    where, text);
   const tagint m = utils::tnumeric(FLERR, text, false, lmp);
   if (m < 1)
     lmp->error->all(FLERR, "fix cell/fluid {}: the cell (molecule ID) must be >= 1, got {}", where,
@@ -179,8 +204,29 @@ tagint cell_id(LAMMPS *lmp, const char *text, const std::string &where)
 }
 }    // namespace
 
-// one keyword and its arguments; returns how many words it took
+// one keyword and its arguments; returns how many words it took. In the fix command a keyword
+// other than cell and cells (which add up, cell by cell) may come once: a second one would
+// silently replace the first (external psi, then external flux, ran with the flux only).
+// fix_modify changes them between runs, so there the last one counts.
 int FixCellFluid::parse_keyword(int narg, char **arg)
+{
+  const int n = parse_one(narg, arg);
+  const std::string key = arg[0];
+  if (in_command && key != "cell" && key != "cells") {
+    std::string words = key;
+    for (int k = 1; k < n; k++) words += std::string(" ") + arg[k];
+    auto it = given.find(key);
+    if (it != given.end())
+      error->all(FLERR,
+                 "fix cell/fluid: keyword '{}' given twice, '{}' and '{}': give it once "
+                 "(fix_modify changes it between runs)",
+                 key, it->second, words);
+    given[key] = words;
+  }
+  return n;
+}
+
+int FixCellFluid::parse_one(int narg, char **arg)
 {
   const std::string key = arg[0];
   auto need = [&](int n, const char *form) {
@@ -229,7 +275,7 @@ int FixCellFluid::parse_keyword(int narg, char **arg)
       error->all(FLERR, "fix cell/fluid cells: cannot open file '{}': {}", arg[1],
                  utils::getsyserror());
     std::string line;
-    int lineno = 0;
+    int lineno = 0, entries = 0;
     while (std::getline(in, line)) {
       lineno++;
       line = utils::trim_comment(line);
@@ -243,7 +289,15 @@ int FixCellFluid::parse_keyword(int narg, char **arg)
       const tagint m = cell_id(lmp, words[0].c_str(), where);
       percell[m] = {osmotic_value(lmp, words[1].c_str(), what),
                     conductivity_value(lmp, words[2].c_str(), what)};
+      entries++;
     }
+    // an empty file (the wrong one, or a generator that wrote nothing) would leave every cell at
+    // the fix's Pi and Lp without a word
+    if (entries == 0)
+      error->all(FLERR,
+                 "fix cell/fluid cells: file '{}' has no 'M Pi Lp' line ({} lines, all blank or "
+                 "comments); give the cells' values or leave out the keyword",
+                 arg[1], lineno);
     return 2;
   }
   if (key == "solute" || key == "exchange") {
@@ -260,14 +314,37 @@ int FixCellFluid::parse_keyword(int narg, char **arg)
     else
       error->all(FLERR, "fix cell/fluid: keyword 'external' expects 'psi' or 'flux', got '{}'",
                  arg[1]);
+    require_number(lmp, arg[2], fmt::format("the value of 'external {}'", arg[1]));
     ext_value = utils::numeric(FLERR, arg[2], false, lmp);
     if (ext_value != 0.0)
       CellMech::require_magnitude(lmp, "fix cell/fluid", "external value", ext_value);
     return 3;
   }
+  if (key == "exposed") {
+    need(2, "exposed outside D' or 'exposed unglued");
+    if (strcmp(arg[1], "unglued") == 0) {
+      expose = EXPOSE_UNGLUED;
+      return 2;
+    }
+    if (strcmp(arg[1], "outside") != 0)
+      error->all(FLERR,
+                 "fix cell/fluid: keyword 'exposed' expects 'outside D' or 'unglued', got '{}'",
+                 arg[1]);
+    need(3, "exposed outside D");
+    require_number(lmp, arg[2], "the distance D of 'exposed outside'");
+    const double D = utils::numeric(FLERR, arg[2], false, lmp);
+    if (D <= 0.0)
+      error->all(FLERR, "fix cell/fluid: the distance D of 'exposed outside' must be > 0, got {}",
+                 arg[2]);
+    CellMech::require_magnitude(lmp, "fix cell/fluid", "exposed distance", D);
+    expose = EXPOSE_OUTSIDE;
+    expose_depth = D;
+    depth_given = true;
+    return 3;
+  }
   error->all(FLERR,
              "Unknown keyword '{}' for fix cell/fluid: expected Pi, Lp, cell, cells, solute, "
-             "exchange or external",
+             "exchange, external or exposed",
              key);
   return 0;
 }
@@ -318,7 +395,39 @@ void FixCellFluid::init()
                  level < 0 ? std::string("pair inner/middle/outer")
                            : fmt::format("pair {}", level + 1));
   }
+  // exposed outside looks for other cells' walls up to expose_depth from a triangle: they must be
+  // here as ghosts on every rank, as pair styles raise the cutoff for what they need (tip4p)
+  if (exchange && expose == EXPOSE_OUTSIDE && active()) {
+    // the default is a length in um; reduced units have no um to convert it from
+    if (!depth_given && force->angstrom == 1.0 && strcmp(update->unit_style, "lj") == 0)
+      error->all(FLERR,
+                 "Fix cell/fluid {} exposed outside: units lj has no length for the default "
+                 "distance (10 um); give it, 'exposed outside D', or use exposed unglued",
+                 id);
+    if (comm->mode != Comm::SINGLE)
+      error->all(FLERR,
+                 "Fix cell/fluid {} exposed outside needs one ghost cutoff for all atoms "
+                 "(comm_modify mode single), or use exposed unglued",
+                 id);
+    const double have =
+        MAX(comm->cutghostuser, force->pair ? force->pair->cutforce + neighbor->skin : 0.0);
+    if (have < expose_depth) {
+      if (comm->me == 0)
+        utils::logmesg(lmp,
+                       "Fix cell/fluid {}: communication cutoff raised from {:.8} to {:.8}, the "
+                       "distance of 'exposed outside'\n",
+                       id, have, expose_depth);
+      comm->cutghostuser = expose_depth;
+    }
+  }
+  const int published = size_array_rows;
   index_cells();
+  if (ncells != published && comm->me == 0 && !modify->get_fix_by_style("^ave/time").empty())
+    error->warning(FLERR,
+                   "Fix cell/fluid {}: the number of cells changed from {} to {} since the fix "
+                   "was defined or last ran; a fix ave/time defined before now keeps the old "
+                   "number of rows of f_{}",
+                   id, published, ncells, id);
 }
 
 /* ----------------------------------------------------------------------
@@ -378,8 +487,8 @@ void FixCellFluid::index_cells()
   flux[0] = 0.0;    // slot 0: IDs that left
   w0[0] = 0.0;
   water0 = w0;
-  for (auto *v :
-       {&pi0, &lp, &water, &pinow, &psi, &exposed, &glued, &aref, &sump, &sumstiff, &sumrho})
+  for (auto *v : {&pi0, &lp, &water, &pinow, &psi, &exposed, &glued, &open_area, &aref, &sump,
+                  &sumstiff, &sumrho})
     v->assign(n + 1, 0.0);
   ncells = n;
   for (double **a : {&area, &nfluid, &nbroken, &flux_local, &flux_all}) {
@@ -403,7 +512,7 @@ void FixCellFluid::cell_geometry()
   tagint *molecule = atom->molecule;
   int *mask = atom->mask;
   const int n1 = ncells + 1;
-  constexpr int NF = 8;
+  constexpr int NF = 9;
   std::vector<double> local(NF * n1, 0.0), all(NF * n1);
   double **ref = iref >= 0 ? atom->darray[iref] : nullptr;
 
@@ -425,6 +534,9 @@ void FixCellFluid::cell_geometry()
       }
       tri_aref[n] = triangle_area(u, w);
     }
+    // the triangles that face the outside, found where the ghosts are fresh: at the build
+    tri_open.assign(nangle, 1);
+    if (exchange && expose == EXPOSE_OUTSIDE) find_open_triangles();
   }
   for (int n = 0; n < nangle; n++) {
     if (anglelist[n][3] <= 0) continue;    // triangle of a broken wall
@@ -436,8 +548,10 @@ void FixCellFluid::cell_geometry()
       u[d] = x[b][d] - x[a][d];
       w[d] = x[c][d] - x[a][d];
     }
-    local[m] += triangle_area(u, w);
+    const double A = triangle_area(u, w);
+    local[m] += A;
     if (ref) local[3 * n1 + m] += tri_aref[n];
+    if (tri_open[n]) local[8 * n1 + m] += A;
   }
   double *rho = sph->rho_array();
   double *rmass = atom->rmass;
@@ -469,6 +583,160 @@ void FixCellFluid::cell_geometry()
     sump[m] = all[5 * n1 + m];
     sumstiff[m] = all[6 * n1 + m];
     sumrho[m] = all[7 * n1 + m];
+    open_area[m] = all[8 * n1 + m];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   exposed outside (Eq. W4): a wall triangle faces the outside unless it is
+   glued (two of its nodes hold intact lamella bonds: the cells' turgor
+   peels glued faces up to the lamella's critical opening, 12 um in the
+   coarse block, and they are no less glued) or a wall node of another
+   cell lies in front of it (hides_triangle) within expose_depth of its
+   central node (walls that touch or face each other across a narrow
+   space, glued or not). The central node is owned (the rank that owns it
+   lists the triangle) and, at a neighbour-list build, inside this rank's
+   subdomain, so every node within expose_depth <= the ghost cutoff (init
+   raises it) is here as an owned atom or a ghost: the same answer on any
+   number of ranks. Evaluated at each build, with the ghosts just
+   communicated; between builds the walls move less than the skin.
+------------------------------------------------------------------------- */
+
+void FixCellFluid::find_open_triangles()
+{
+  double **x = atom->x;
+  tagint *molecule = atom->molecule;
+  int *type = atom->type;
+  const int nall = atom->nlocal + atom->nghost;
+  const double D = expose_depth, D2 = D * D;
+
+  // the nodes glued to another cell: their intact lamella bonds (in the bond list once, owned by
+  // either node's rank), counted at both nodes and summed onto their owners, then sent to ghosts
+  node_glued.assign(nall, 0.0);
+  int **bondlist = neighbor->bondlist;
+  for (int k = 0; k < neighbor->nbondlist; k++) {
+    const int i1 = bondlist[k][0], i2 = bondlist[k][1];
+    if (bondlist[k][2] <= 0 || molecule[i1] == molecule[i2]) continue;    // debonded or a tether
+    node_glued[i1] += 1.0;
+    node_glued[i2] += 1.0;
+  }
+  comm->reverse_comm(this);
+  comm->forward_comm(this);
+
+  // the wall nodes of all cells (a cell's atoms that are not fluid), binned in cubes of side D
+  // (smaller bins, fewer nodes to test, cost more in bins visited: 2x the time at D/2)
+  std::vector<int> node;
+  double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0};
+  for (int j = 0; j < nall; j++) {
+    if (molecule[j] < 1 || sph->is_fluid(type[j])) continue;
+    for (int d = 0; d < 3; d++) {
+      lo[d] = node.empty() ? x[j][d] : MIN(lo[d], x[j][d]);
+      hi[d] = node.empty() ? x[j][d] : MAX(hi[d], x[j][d]);
+    }
+    node.push_back(j);
+  }
+  if (node.empty()) return;
+  // larger bins where a far atom would make too many: at most about eight bins per node
+  double side = D;
+  const double cap = 8.0 * (double) node.size() + 64.0;
+  while (((hi[0] - lo[0]) / side + 1.0) * ((hi[1] - lo[1]) / side + 1.0) *
+             ((hi[2] - lo[2]) / side + 1.0) >
+         cap)
+    side *= 2.0;
+  int nb[3];
+  for (int d = 0; d < 3; d++) nb[d] = (int) ((hi[d] - lo[d]) / side) + 1;
+  auto bin_of = [&](const double *p, int d) {
+    const int k = (int) ((p[d] - lo[d]) / side);
+    return k < 0 ? 0 : (k >= nb[d] ? nb[d] - 1 : k);
+  };
+  const int nbins = nb[0] * nb[1] * nb[2];
+  std::vector<int> start(nbins + 1, 0), sorted(node.size());
+  std::vector<int> where(node.size());
+  for (size_t k = 0; k < node.size(); k++) {
+    const double *p = x[node[k]];
+    where[k] = (bin_of(p, 2) * nb[1] + bin_of(p, 1)) * nb[0] + bin_of(p, 0);
+    start[where[k] + 1]++;
+  }
+  for (int b = 0; b < nbins; b++) start[b + 1] += start[b];
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (size_t k = 0; k < node.size(); k++) sorted[fill[where[k]]++] = node[k];
+  }
+
+  int **anglelist = neighbor->anglelist;
+  const int nangle = neighbor->nanglelist;
+  for (int n = 0; n < nangle; n++) {
+    if (anglelist[n][3] <= 0 || tri_slot[n] < 1) continue;
+    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
+    // glued: two or three of its nodes hold lamella bonds (the glued region's rim runs through
+    // triangles; the majority splits them about evenly between glued and not)
+    if ((node_glued[a] > 0.0) + (node_glued[b] > 0.0) + (node_glued[c] > 0.0) >= 2) {
+      tri_open[n] = 0;
+      continue;
+    }
+    double u[3], w[3], v[3], nrm[3], cen[3];
+    for (int d = 0; d < 3; d++) {
+      u[d] = x[b][d] - x[a][d];
+      w[d] = x[c][d] - x[a][d];
+      v[d] = x[c][d] - x[b][d];
+      cen[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+    }
+    nrm[0] = u[1] * w[2] - u[2] * w[1];
+    nrm[1] = u[2] * w[0] - u[0] * w[2];
+    nrm[2] = u[0] * w[1] - u[1] * w[0];
+    const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    if (len == 0.0) continue;    // degenerate: no direction to face
+    for (int d = 0; d < 3; d++) nrm[d] /= len;
+    const double h = std::sqrt(
+        MAX(MAX(u[0] * u[0] + u[1] * u[1] + u[2] * u[2], w[0] * w[0] + w[1] * w[1] + w[2] * w[2]),
+            v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    const tagint own = molecule[b];
+    int k0[3], k1[3];
+    for (int d = 0; d < 3; d++) {
+      double p[3] = {x[b][0], x[b][1], x[b][2]};
+      p[d] = x[b][d] - D;
+      k0[d] = bin_of(p, d);
+      p[d] = x[b][d] + D;
+      k1[d] = bin_of(p, d);
+    }
+    // another cell's wall in front of a triangle is mostly the glued neighbour's, a gap away
+    // along the normal: its bin first, then every bin within D of the central node
+    const double half = 0.5 * side, reach = D + std::sqrt(3.0) * half;
+    auto hidden_in = [&](int bin) {
+      for (int q = start[bin]; q < start[bin + 1]; q++) {
+        const int j = sorted[q];
+        if (molecule[j] == own) continue;
+        double r[3], dc[3];
+        for (int d = 0; d < 3; d++) {
+          r[d] = x[j][d] - x[b][d];
+          dc[d] = x[j][d] - cen[d];
+        }
+        if (r[0] * r[0] + r[1] * r[1] + r[2] * r[2] <= D2 && hides_triangle(dc, nrm, h))
+          return true;
+      }
+      return false;
+    };
+    double p[3];
+    for (int d = 0; d < 3; d++) p[d] = cen[d] + MIN(h, D) * nrm[d];
+    const int first = (bin_of(p, 2) * nb[1] + bin_of(p, 1)) * nb[0] + bin_of(p, 0);
+    bool hidden = hidden_in(first);
+    for (int kz = k0[2]; kz <= k1[2] && !hidden; kz++)
+      for (int ky = k0[1]; ky <= k1[1] && !hidden; ky++)
+        for (int kx = k0[0]; kx <= k1[0] && !hidden; kx++) {
+          const int bin = (kz * nb[1] + ky) * nb[0] + kx;
+          if (bin == first) continue;
+          // a bin wholly behind the triangle's plane or beyond D of its node holds no hider
+          const double bc[3] = {lo[0] + (kx + 0.5) * side, lo[1] + (ky + 0.5) * side,
+                                lo[2] + (kz + 0.5) * side};
+          double sb = 0.0, rb = 0.0;
+          for (int d = 0; d < 3; d++) {
+            sb += (bc[d] - cen[d]) * nrm[d];
+            rb += (bc[d] - x[b][d]) * (bc[d] - x[b][d]);
+          }
+          if (sb < -std::sqrt(3.0) * half || rb > reach * reach) continue;
+          hidden = hidden_in(bin);
+        }
+    tri_open[n] = hidden ? 0 : 1;
   }
 }
 
@@ -538,7 +806,10 @@ void FixCellFluid::cell_water()
     glued[(int) pairs[k]] += pairs[k + 2];
     glued[(int) pairs[k + 1]] += pairs[k + 2];
   }
-  for (int m = 1; m <= ncells; m++) exposed[m] = exposed_area(area[m], aref[m], glued[m]);
+  // without exchange every wall meets the outside whole, as the single cell of the paper
+  for (int m = 1; m <= ncells; m++)
+    exposed[m] = (exchange && expose == EXPOSE_OUTSIDE) ? open_area[m]
+                                                        : exposed_area(area[m], aref[m], glued[m]);
 }
 
 // water moves through some wall: a conductivity > 0 or a set flux
@@ -578,6 +849,22 @@ void FixCellFluid::setup_pre_force(int /*vflag*/)
                  "no fluid particles of group {}",
                  id, kv.first, group->names[igroup]);
   }
+  check_walls();
+}
+
+// fluid of a molecule without wall triangles would have a wall area of 0 and take up or lose no
+// water through it, without a word
+void FixCellFluid::check_walls()
+{
+  const bool flux = external == EXT_FLUX && ext_value != 0.0;
+  for (int m = 1; m <= ncells; m++)
+    if (nfluid[m] > 0 && area[m] <= 0.0 && nbroken[m] == 0.0 && (lp[m] > 0.0 || flux))
+      error->all(FLERR,
+                 "Fix cell/fluid {}: cell (molecule ID) {} holds {} fluid particle(s) of group {} "
+                 "but no wall triangles (angles whose central node has that molecule ID), so its "
+                 "wall area is 0 and no water would cross it; give the fluid the molecule ID of "
+                 "its cell's wall (or, without an external flux, 'cell {} Lp 0' to keep it closed)",
+                 id, cells.id(m), (bigint) nfluid[m], group->names[igroup], cells.id(m));
 }
 
 void FixCellFluid::pre_force(int /*vflag*/)
@@ -665,6 +952,32 @@ void FixCellFluid::pre_force_respa(int vflag, int ilevel, int /*iloop*/)
   // forces) see the same velocities on both sides of a rank boundary, as under Verlet
   if (ilevel > 0) comm->forward_comm();
   pre_force(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   node_glued of ghosts: summed onto the owners, then copied back
+------------------------------------------------------------------------- */
+
+int FixCellFluid::pack_reverse_comm(int n, int first, double *buf)
+{
+  for (int i = 0; i < n; i++) buf[i] = node_glued[first + i];
+  return n;
+}
+
+void FixCellFluid::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int i = 0; i < n; i++) node_glued[list[i]] += buf[i];
+}
+
+int FixCellFluid::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  for (int i = 0; i < n; i++) buf[i] = node_glued[list[i]];
+  return n;
+}
+
+void FixCellFluid::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int i = 0; i < n; i++) node_glued[first + i] = buf[i];
 }
 
 /* ----------------------------------------------------------------------

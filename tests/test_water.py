@@ -11,8 +11,9 @@ cells (cellgen.py tissue 1x1x2, level 3, 440 fluid particles each), short runs.
 3. No exchange across a wall that is not shared (the lamella bonds deleted) or open (a tether of
    cell 1 broken by a low critical stretch): the uptakes stop exactly.
 4. Drying at a set flux q through the exposed wall only: each cell loses q dt times the sum of its
-   exposed area over the steps (to round-off); with exchange yes the glued face (as compute
-   cell/props measures it) is not exposed, without it the whole wall is.
+   exposed area over the steps (to round-off); with exchange yes and exposed unglued the glued face
+   (as compute cell/props measures it) is not exposed, without exchange the whole wall is (the
+   default, exposed outside, in test_tissue_water_probe.py).
 5. Bad inputs end with a clear error naming the keyword.
 """
 import json
@@ -176,7 +177,8 @@ def mpi_restart(d, special):
 
 def no_exchange(d, special):
     # not shared: the lamella bonds (type 2) deleted, the cells still side by side
-    _, r = run(d, special, EXCHANGE, 300, 100, "unglued", pre="delete_bonds all bond 2 remove special")
+    _, r = run(d, special, EXCHANGE + " exposed unglued", 300, 100, "unglued",
+               pre="delete_bonds all bond 2 remove special")
     u = np.abs(np.concatenate([r["U1"], r["U2"]])).max()
     print(f"unglued: max |uptake| {u:.3g} pg, glued area {r['H1'].max():.3g} um^2, exposed/area "
           f"{(r['E1'] / r['A1']).min():.17g}")
@@ -203,7 +205,8 @@ def drying(d, special):
     q, n = 2e-4, 400    # pg/(um^2 us): about 1% of the water in 0.4 us
     res = {}
     for ex in ("yes", "no"):
-        step, r = run(d, special, f"exchange {ex} external flux {q}", n, 100, f"dry-{ex}")
+        step, r = run(d, special, f"exchange {ex} external flux {q} exposed unglued", n, 100,
+                      f"dry-{ex}")
         E = T.load(os.path.join(d, f"dry-{ex}.dat.exposed"))[-1, 1:]
         for c in (1, 2):
             expect = -q * 0.001 * n * E[c - 1]

@@ -740,6 +740,33 @@ TEST(Water, ExposedAreaIsWallLessGluedPart)
   EXPECT_EQ(exposed_area(720.0, 0.0, 0.0), 720.0);      // no rest shape known
 }
 
+TEST(Water, HidesTriangleInFrontOnly)
+{
+  // a triangle of longest edge h = 4 at the origin, facing +z
+  const double n[3] = {0.0, 0.0, 1.0}, h = 4.0;
+  auto at = [&](double x, double y, double z) {
+    const double d[3] = {x, y, z};
+    return hides_triangle(d, n, h);
+  };
+  EXPECT_TRUE(at(0.0, 0.0, 2.56));     // the glued neighbour's node straight ahead
+  EXPECT_FALSE(at(0.0, 0.0, -2.56));   // behind: the cell's own side
+  EXPECT_FALSE(at(0.0, 0.0, 0.0));     // in its plane
+  EXPECT_FALSE(at(5.0, 0.0, 0.0));
+  // near the wall, within h of the normal line: a facing wall's nodes 3.3-5.5 apart are not missed
+  EXPECT_TRUE(at(3.9, 0.0, 1.0));
+  EXPECT_FALSE(at(4.1, 0.0, 1.0));
+  // further out, within 45 degrees of the normal
+  EXPECT_TRUE(at(6.0, 0.0, 6.0));
+  EXPECT_TRUE(at(5.9, 0.0, 6.0));
+  EXPECT_FALSE(at(6.1, 0.0, 6.0));
+  EXPECT_FALSE(at(0.0, 9.0, 8.0));
+  // a normal tilted by 45 degrees
+  const double m[3] = {std::sqrt(0.5), 0.0, std::sqrt(0.5)}, d[3] = {10.0, 0.0, 0.0};
+  EXPECT_TRUE(hides_triangle(d, m, h));    // exactly on the 45-degree cone
+  const double e[3] = {-1.0, 0.0, 10.0};
+  EXPECT_FALSE(hides_triangle(e, m, h));    // s = 6.4, off the normal line by 7.8
+}
+
 TEST(Tait, InternalEnergyDerivativeIsPOverRho2)
 {
   // de/drho = P / rho^2 (central difference, h = 1e-6 rho0: truncation ~ (h/rho0)^2 c^2 ~ 1e-7

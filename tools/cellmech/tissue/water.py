@@ -342,7 +342,7 @@ def dry(rep, S):
     rep.w("### 3. Drying a block to 20% of its water", "",
           "`in.tissue-dry` after `in.tissue-inflate` on a 2x2x2 coarse block (Pi0 -364 kPa): the solutes stay in their "
           "cells (Eq. W1), water crosses the glued faces (Eqs. W2-W3) and leaves through the exposed faces only "
-          "(Eq. W4) to air at psi_ext -3000 kPa (about 98% relative humidity at 20 C), below the cells' potential "
+          "(Eq. W4, the wall facing the outside of the block) to air at psi_ext -3000 kPa (about 98% relative humidity at 20 C), below the cells' potential "
           "at every water content (Pi0/0.2 = -1820 kPa at 20%). Nothing is imposed on the walls. "
           f"Water {q['water0_pg']:.4g} pg down to {q['end_fraction']:.1%} in {q['time_us']:.3g} us.", "",
           "*Rate.* Lp is 2e-4 um/(kPa us), 2e5 times the physical 1e-9, so that the block dries in tens of us "
@@ -400,7 +400,8 @@ def section(rep):
     S = {}
     rep.w("## Water", "",
           "fix cell/fluid with each cell's solutes kept (`solute yes`, Eq. W1), water between glued cells "
-          "(`exchange yes`, Eqs. W2-W3) and the outside through the exposed wall only (`external`, Eq. W4); "
+          "(`exchange yes`, Eqs. W2-W3) and the outside through the exposed wall only (`external`, Eq. W4: the "
+          "wall neither glued to another cell nor facing one within 10 um, `exposed outside`); "
           "see docs/fix_cell_fluid.rst and docs/Howto_tissue.rst. Made by tools/tissue.sh's water stages "
           "(`ONLY=\"gen inflate-pair water-potential water-pair water-inflate water-dry water-dry-slow "
           "report-water\"` runs them alone and writes this section only); wall times, one core per run: "
