@@ -26,6 +26,7 @@
 #include "cell_fields.h"
 
 #include "atom.h"
+#include "bond.h"
 #include "cell_physics.h"
 #include "cell_restart.h"
 #include "comm.h"
@@ -267,6 +268,10 @@ void AngleCellMembrane::coeff(int narg, char **arg)
       wrinkle_one = v == "yes" ? 1.0 : 0.0;
     }
   }
+  if (atom->nangletypes == 0)
+    error->all(FLERR,
+               "Angle_coeff cell/membrane: the system has no angle types, so no wall triangles "
+               "to give coefficients to (a data file of cellgen.py has them)");
   if (!allocated) allocate();
 
   int ilo, ihi;
@@ -320,6 +325,23 @@ void AngleCellMembrane::init_style()
     error->all(FLERR,
                "Angle style cell/membrane with damping gamma > 0 requires 'comm_modify vel yes' "
                "(ghost velocities)");
+
+  // the membrane is the continuum form of the tether net (Eqs. M1-M2 against Eq. 19): with the
+  // tethers on as well the wall is counted twice, and a cell holds a higher turgor at the same
+  // osmotic potential
+  Bond *tethers = force->bond_match("cell/tether");
+  bool tethered = false;
+  if (tethers && tethers->setflag)
+    for (int i = 1; i <= atom->nbondtypes; i++)
+      if (tethers->setflag[i]) tethered = true;
+  if (tethered)
+    error->all(FLERR,
+               "Angle style cell/membrane: bond style cell/tether acts on the same wall: the "
+               "tethers and the membrane are two models of one wall and together count it twice. "
+               "Keep the tethers as topology (bond_style zero, or zero for the wall's type under "
+               "bond_style hybrid: cell-wall.lmp -var wall membrane), or the tethers alone "
+               "(angle_style zero nocoeff: -var wall tether)");
+  CellMech::check_drag(lmp);
 
   // triangles that can fail need the topology bookkeeping of fix CELL_TETHER_BREAK (made by
   // angle_coeff, or here for coefficients from a restart file, before the fixes are initialised)

@@ -36,6 +36,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,6 +80,8 @@ void BondCellLamella::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   update_dc();
+  // the setup of a run, with the bond list and the ghosts' masses and areas in place
+  if (update->setupflag) check_stiffness();
 
   double **x = atom->x;
   double **v = atom->v;
@@ -106,14 +109,14 @@ void BondCellLamella::compute(int eflag, int vflag)
     if (!(alam[i1] > 0.0) || !(alam[i2] > 0.0))
       error->one(FLERR,
                  "Bond style cell/lamella: bond {}-{} has no area (d_alam {} and {}); is d_alam "
-                 "set for every node with lamella bonds and communicated to ghosts (ghost yes)?",
-                 tag[i1], tag[i2], alam[i1], alam[i2]);
+                 "set for every node with lamella bonds and communicated to ghosts (ghost yes)?{}",
+                 tag[i1], tag[i2], alam[i1], alam[i2], CellMech::RESTART_FIELDS_HINT);
     const double r0 = CellMech::rest_length(atom->darray[iref], i1, i2);
     if (!(r0 > 0.0))
       error->one(FLERR,
                  "Bond style cell/lamella: bond {}-{} has zero rest length; are the d2_cellref "
-                 "reference positions set and communicated to ghosts (ghost yes)?",
-                 tag[i1], tag[i2]);
+                 "reference positions set and communicated to ghosts (ghost yes)?{}",
+                 tag[i1], tag[i2], CellMech::RESTART_FIELDS_HINT);
 
     const double delx = x[i1][0] - x[i2][0];
     const double dely = x[i1][1] - x[i2][1];
@@ -158,6 +161,72 @@ void BondCellLamella::compute(int eflag, int vflag)
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
   }
   breaker->computed();
+}
+
+/* ----------------------------------------------------------------------
+   A lamella bond is a spring of stiffness A sigma_c e / delta_c (the slope of Eqs. L1-L2 at zero
+   opening, the steepest of the law) between two wall nodes; a small critical opening delta_c
+   makes it stiffer than the time step can follow. A spring alone is integrated stably by velocity
+   Verlet only while omega dt < 2, omega^2 = k (1/m1 + 1/m2); beyond that the run blows up within
+   a few steps, and the blow-up is reported far from its cause. Stops the run at its start,
+   naming the bond type's delta_c and what would keep it stable. Collective: at the setup, where
+   every rank computes the bonds.
+------------------------------------------------------------------------- */
+
+void BondCellLamella::check_stiffness()
+{
+  const double *alam = atom->dvector[ialam];
+  const double dt = update->dt;
+  int **bondlist = neighbor->bondlist;
+  struct {
+    double w;
+    int rank;
+  } mine = {0.0, comm->me}, worst;
+  int nmax = -1;
+  double kmax = 0.0;
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1], type = bondlist[n][2];
+    if (type <= 0 || !setflag[type] || !(dc[type] > 0.0)) continue;
+    const double m1 = atom->rmass ? atom->rmass[i1] : atom->mass[atom->type[i1]];
+    const double m2 = atom->rmass ? atom->rmass[i2] : atom->mass[atom->type[i2]];
+    const double k = CellMech::lamella_area(alam, i1, i2) * sigma[type] * M_E / dc[type];
+    const double w = sqrt(k * (1.0 / m1 + 1.0 / m2)) * dt;
+    if (!(w <= mine.w)) {
+      mine.w = w;
+      nmax = n;
+      kmax = k;
+    }
+  }
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  // type, tags, area, masses, stiffness of the stiffest bond, from the rank that has it
+  double info[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  if (worst.rank == comm->me && nmax >= 0) {
+    const int i1 = bondlist[nmax][0], i2 = bondlist[nmax][1];
+    info[0] = bondlist[nmax][2];
+    info[1] = (double) atom->tag[i1];
+    info[2] = (double) atom->tag[i2];
+    info[3] = CellMech::lamella_area(alam, i1, i2);
+    info[4] = atom->rmass ? atom->rmass[i1] : atom->mass[atom->type[i1]];
+    info[5] = atom->rmass ? atom->rmass[i2] : atom->mass[atom->type[i2]];
+    info[6] = kmax;
+  }
+  MPI_Bcast(info, 7, MPI_DOUBLE, worst.rank, world);
+  const int type = (int) info[0];
+  stiff = {type, type > 0 ? dc[type] : 0.0, worst.w};
+  if (!(worst.w >= 2.0) || !CellMech::will_step(lmp)) return;
+  // omega dt < 2 at delta_c > A sigma_c e dt^2 / (4 mu), mu the reduced mass
+  const double mu = info[4] * info[5] / (info[4] + info[5]);
+  const double dc_min = info[3] * sigma[type] * M_E * dt * dt / (4.0 * mu);
+  error->all(FLERR,
+             "Bond style cell/lamella: bond type {} (sigma_c {:g}, Gc {:g}) has a critical opening "
+             "delta_c = {:.4g} too small for the time step {:g}: its bond {}-{} (area {:.4g}, "
+             "node masses {:.4g} and {:.4g}) is a spring of stiffness A sigma_c e / delta_c = "
+             "{:.4g} with omega dt = {:.4g}, and velocity Verlet needs omega dt < 2 (the run would "
+             "blow up). Stable: delta_c > {:.4g}, i.e. Gc > {:.4g} at this sigma_c (delta_c = Gc / "
+             "(e sigma_c)), or a time step below {:.4g}",
+             type, sigma[type], Gc[type], dc[type], dt, (long) info[1], (long) info[2], info[3],
+             info[4], info[5], info[6], worst.w, dc_min, Gc[type] * dc_min / dc[type],
+             2.0 * dt / worst.w);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -39,6 +39,14 @@ class BondCellLamella : public Bond {
   double single(int, double, int, int, double &) override;
   void *extract(const char *, int &) override;
 
+  // The stiffest bond of the last setup against the time step: its type, critical opening and
+  // omega dt (velocity Verlet integrates a spring only while omega dt < 2), for the blow-up advice
+  struct Stiffest {
+    int type = 0;
+    double delta_c = 0.0, omega_dt = 0.0;
+  };
+  Stiffest stiffest() const { return stiff; }
+
  protected:
   double *sigma, *Gc, *gamma;    // strength (pressure), fracture energy (energy/area), damping
   double *dc;                    // characteristic opening of each type, from sigma and Gc
@@ -47,8 +55,10 @@ class BondCellLamella : public Bond {
   double lmax;                   // largest rest length, for the bond-extent check of LAMMPS
   std::string logfile;           // debond event log (bond_style cell/lamella log FILE)
   FixCellLamellaBreak *breaker;    // the bookkeeping of debonds (fix CELL_LAMELLA_BREAK)
+  Stiffest stiff;
 
   void update_dc();
+  void check_stiffness();
   FixCellLamellaBreak *break_fix();
   void add_break_fix();
 

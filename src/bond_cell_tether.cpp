@@ -27,6 +27,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -114,8 +115,8 @@ void BondCellTether::compute(int eflag, int vflag)
       if (!(l0 > 0.0))
         error->one(FLERR,
                    "Bond style cell/tether: tether {}-{} has zero rest length; are the "
-                   "d2_cellref reference positions set and communicated to ghosts (ghost yes)?",
-                   tag[i1], tag[i2]);
+                   "d2_cellref reference positions set and communicated to ghosts (ghost yes)?{}",
+                   tag[i1], tag[i2], CellMech::RESTART_FIELDS_HINT);
       rest[n] = l0;
       scale[n] = tether_tension_scale(G[type], t0[type], l0);
       damp[n] = gamma[type];
@@ -151,8 +152,8 @@ void BondCellTether::compute(int eflag, int vflag)
           FLERR,
           "Bond style cell/tether: tether {}-{} is stretched {:.4g} times its rest length at "
           "the start of a run; the reference positions d2_cellref are wrong for it (is the "
-          "fix property/atom defined with 'ghost yes'?)",
-          tag[i1], tag[i2], lam[n]);
+          "fix property/atom defined with 'ghost yes'?){}",
+          tag[i1], tag[i2], lam[n], CellMech::RESTART_FIELDS_HINT);
 
     // Failure is tension only: a compressed tether never breaks. The bond leaves the bond list
     // and the bond arrays of the atom(s) storing it now; fix CELL_TETHER_BREAK takes the rest of
@@ -320,6 +321,42 @@ void BondCellTether::init_style()
                  force->special_lj[1], force->special_lj[2], force->special_lj[3]);
     breaker = FixCellTetherBreak::ensure(lmp);
   }
+  check_timestep();
+  CellMech::check_drag(lmp);
+}
+
+/* ----------------------------------------------------------------------
+   A time step far above the stability limit of a tether (cell_checks.h: FAR_ABOVE_LIMIT): the
+   tension's slope at rest is 2 sqrt(3) G t0 whatever the rest length (Eq. 19), and two nodes of
+   mass m joined by it oscillate at omega^2 = 2 k / m; velocity Verlet needs omega dt < 2.
+------------------------------------------------------------------------- */
+
+void BondCellTether::check_timestep()
+{
+  if (!CellMech::will_step(lmp)) return;
+  double kmax = 0.0;
+  int tmax = 0;
+  for (int t = 1; t <= atom->nbondtypes; t++)
+    if (setflag[t] && 2.0 * SQRT3 * G[t] * t0[t] > kmax)
+      kmax = 2.0 * SQRT3 * G[t] * t0[t], tmax = t;
+  double mlocal = HUGE_VAL, mmin;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < atom->num_bond[i]; m++) {
+      const int type = atom->bond_type[i][m];
+      if (type > 0 && setflag[type])
+        mlocal = MIN(mlocal, atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
+    }
+  MPI_Allreduce(&mlocal, &mmin, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (kmax == 0.0 || !(mmin > 0.0) || mmin == HUGE_VAL) return;
+  const double limit = 2.0 / sqrt(2.0 * kmax / mmin);
+  if (update->dt <= CellMech::FAR_ABOVE_LIMIT * limit) return;
+  error->all(FLERR,
+             "Bond style cell/tether: the time step {:g} is {:.3g} times the stability limit "
+             "2/omega = {:.4g} of a tether (bond type {}: G {:g}, t0 {:g}, stiffness 2 sqrt(3) G "
+             "t0 = {:.4g} between nodes of mass {:.4g}): the wall would blow the run up in its "
+             "first steps; {}",
+             update->dt, update->dt / limit, limit, tmax, G[tmax], t0[tmax], kmax, mmin,
+             CellMech::timestep_hint(lmp));
 }
 
 /* ---------------------------------------------------------------------- */

@@ -57,6 +57,7 @@ class BondCellTether : public Bond {
   void add_break_fix();
 
   void allocate();
+  void check_timestep();
 };
 
 }    // namespace LAMMPS_NS

@@ -144,6 +144,10 @@ void DihedralCellBending::coeff(int narg, char **arg)
                "Dihedral_coeff cell/bending: expected 'dihedral_coeff N G t0' (shear modulus and "
                "thickness of the wall), got {} arguments",
                narg);
+  if (atom->ndihedraltypes == 0)
+    error->all(FLERR,
+               "Dihedral_coeff cell/bending: the system has no dihedral types, so no hinges to "
+               "bend: write the data file with them (cellgen.py ... --bending)");
   if (!allocated) allocate();
 
   int ilo, ihi;

@@ -41,6 +41,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
@@ -622,11 +623,69 @@ void PairCellSPH::init_style()
                "Pair style cell/sph requires 'comm_modify vel yes' (viscosity and continuity use "
                "ghost velocities)");
   check_fluid_atoms();
+  check_spacing();
+  check_timestep();
+  CellMech::check_drag(lmp);
   // without fix cell/fluid the continuity equation is never integrated: a frozen density is
   // legal (a fixed boundary of SPH particles) but rarely meant for a whole system
   if (modify->get_fix_by_style("^cell/fluid").empty() && comm->me == 0)
     error->warning(FLERR, "Pair style cell/sph without fix cell/fluid: densities stay constant");
   neighbor->add_request(this);
+}
+
+/* ----------------------------------------------------------------------
+   The kernel must reach the neighbours. A fluid particle stands for the volume mass/rho, so the
+   fluid's spacing is dx = (mass/rho)^(1/3) (mean over each type's particles, all ranks); at
+   2s = 1.25 dx the six nearest neighbours sit at r = 1.6 s, where the kernel has fallen to 1% of
+   its peak, and the fluid has next to no pressure to hold its volume: the walls stay slack and the
+   particles leave the cell (a coarse tissue with the paper's s = 3.2 um: 2s/dx = 1.21). The
+   lengths of the levels give 2s/dx = 2.1 to 2.4 in a generated cell and about 2 once inflated.
+------------------------------------------------------------------------- */
+
+void PairCellSPH::check_spacing()
+{
+  const int ntypes = atom->ntypes;
+  std::vector<double> local(2 * (ntypes + 1), 0.0), all(2 * (ntypes + 1));
+  const double *rho = atom->dvector[irho];
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int t = atom->type[i];
+    if (!fluid[t]) continue;
+    local[t] += atom->rmass[i] / rho[i];
+    local[ntypes + 1 + t] += 1.0;
+  }
+  MPI_Allreduce(local.data(), all.data(), 2 * (ntypes + 1), MPI_DOUBLE, MPI_SUM, world);
+  for (int t = 1; t <= ntypes; t++) {
+    const double n = all[ntypes + 1 + t];
+    if (!fluid[t] || n == 0.0) continue;
+    const double dx = cbrt(all[t] / n);
+    if (2.0 * s[t][t] >= MIN_SUPPORT_SPACINGS * dx) continue;
+    error->all(FLERR,
+               "Pair style cell/sph: the kernel support 2s = {:g} of fluid type {} (pair_coeff {} "
+               "{} cell/sph ... s = {:g}) spans {:.3g} fluid spacings, below {:g}: its {:.0f} "
+               "particles stand for (mass/density)^(1/3) = {:.4g} each, and a support that short "
+               "hardly reaches the nearest neighbours, so the fluid holds no pressure and leaves "
+               "its walls. Use s >= {:.4g}: the lengths of the wall's level (cellgen.py writes "
+               "them beside the data file, DATA.lmp; tools/cellmech/params.py LEVELS)",
+               2.0 * s[t][t], t, t, t, s[t][t], 2.0 * s[t][t] / dx, MIN_SUPPORT_SPACINGS, n, dx,
+               0.5 * MIN_SUPPORT_SPACINGS * dx);
+  }
+}
+
+// a time step far above the acoustic limit (cell_checks.h: FAR_ABOVE_LIMIT)
+void PairCellSPH::check_timestep()
+{
+  if (!CellMech::will_step(lmp)) return;
+  const double dt = update->dt;
+  for (int t = 1; t <= atom->ntypes; t++) {
+    if (!fluid[t] || !setflag[t][t]) continue;
+    const double limit = 0.25 * s[t][t] / c[t];
+    if (dt <= CellMech::FAR_ABOVE_LIMIT * limit) continue;
+    error->all(FLERR,
+               "Pair style cell/sph: the time step {:g} is {:.3g} times the acoustic limit 0.25 "
+               "s/c = {:.4g} of fluid type {} (s {:g}, c {:g}): the fluid would blow the run up "
+               "in its first steps; {}",
+               dt, dt / limit, limit, t, s[t][t], c[t], CellMech::timestep_hint(lmp));
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -671,13 +730,13 @@ void PairCellSPH::check_fluid_atoms()
   if (first[0] != MAXTAGINT)
     error->all(FLERR,
                "Pair style cell/sph: fluid particle {} has mass {} (rmass must be > 0: set it in "
-               "the data file's cell section or with 'set ... mass')",
-               first[0], value(first[0], 0));
+               "the data file's cell section or with 'set ... mass'){}",
+               first[0], value(first[0], 0), CellMech::RESTART_FIELDS_HINT);
   if (first[1] != MAXTAGINT)
     error->all(FLERR,
                "Pair style cell/sph: fluid particle {} has density d_rho {} (must be > 0: the "
-               "rest density rho0 for a new particle)",
-               first[1], value(first[1], 1));
+               "rest density rho0 for a new particle){}",
+               first[1], value(first[1], 1), CellMech::RESTART_FIELDS_HINT);
 }
 
 double PairCellSPH::init_one(int i, int j)

@@ -59,7 +59,11 @@ class PairCellSPH : public Pair {
 
  protected:
   void check_fluid_atoms();
+  void check_spacing();
+  void check_timestep();
   void check_respa_level();
+  // the kernel support 2s must span this many fluid spacings (check_spacing)
+  static constexpr double MIN_SUPPORT_SPACINGS = 1.25;
   int *fluid;                    // per type: 1 if a fluid type (pair_coeff I I set)
   double *rho0, *c, *P0, *mu;    // per type
   double *kappa;                 // per type: tait_kappa(rho0, c), set by init_style

@@ -32,6 +32,7 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -65,6 +66,8 @@ void PairCellVirtual::compute(int eflag, int vflag)
   int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
   const double reachsq = reach * reach;
+  // the setup of a run, with the triangle list and the ghost nodes in place
+  if (update->setupflag) check_contact_distance();
 
   for (int n = 0; n < nanglelist; n++) {
     if (anglelist[n][3] <= 0) continue;    // triangle of a broken wall carries no virtual particle
@@ -162,7 +165,59 @@ void PairCellVirtual::compute(int eflag, int vflag)
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   The contacts must close the wall's holes. A fluid particle crosses a triangle where it keeps r0
+   from its three nodes and its virtual particle; on an edge the point farthest from those is a
+   third of the edge from each, so a triangle with edges above about 3 r0 lets fluid through, and
+   the fluid leaves the cell (a coarse tissue with the paper's r0 = 1.6 um against triangles of
+   mean edge 4.7 um: half its fluid outside its walls, the walls slack). Stops the run at its
+   start when r0 is below half the mean edge of the triangles of a wall type that meets fluid of
+   that pair: the lengths of the levels give r0 = 0.7 times the mean edge. Collective: at the
+   setup, where every rank computes the triangles.
+------------------------------------------------------------------------- */
+
+void PairCellVirtual::check_contact_distance()
+{
+  const int ntypes = atom->ntypes;
+  double **x = atom->x;
+  const int *type = atom->type;
+  int **anglelist = neighbor->anglelist;
+  // per type: sum and count of triangle edges of central nodes of that type, atoms of that type
+  std::vector<double> local(3 * (ntypes + 1), 0.0), all(3 * (ntypes + 1));
+  auto dist = [&](int i, int j) {
+    const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+    return sqrt(dx * dx + dy * dy + dz * dz);
+  };
+  for (int n = 0; n < neighbor->nanglelist; n++) {
+    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
+    if (anglelist[n][3] <= 0 || b >= atom->nlocal) continue;
+    local[type[b]] += dist(a, b) + dist(b, c) + dist(a, c);
+    local[ntypes + 1 + type[b]] += 3.0;
+  }
+  for (int i = 0; i < atom->nlocal; i++) local[2 * (ntypes + 1) + type[i]] += 1.0;
+  MPI_Allreduce(local.data(), all.data(), 3 * (ntypes + 1), MPI_DOUBLE, MPI_SUM, world);
+  for (int w = 1; w <= ntypes; w++) {
+    const double nedge = all[ntypes + 1 + w];
+    // a wall type without coefficients: compute() names it
+    if (nedge == 0.0 || !listed[w]) continue;
+    const double edge = all[w] / nedge;
+    for (int k = 1; k <= ntypes; k++) {
+      // coefficients are kept for I <= J
+      if (k == w || !setflag[MIN(w, k)][MAX(w, k)] || all[2 * (ntypes + 1) + k] == 0.0) continue;
+      const double r0wk = r0[MIN(w, k)][MAX(w, k)];
+      if (r0wk >= MIN_R0_EDGE * edge) continue;
+      error->all(FLERR,
+                 "Pair style cell/virtual: the contact distance r0 = {:g} of wall type {} and "
+                 "fluid type {} (pair_coeff {} {} cell/virtual f0 r0) is below {:g} times the "
+                 "mean edge {:.4g} of the wall's {:.0f} triangles (r0 >= {:.4g}): fluid passes "
+                 "between the nodes and the virtual particles of triangles that large and leaves "
+                 "its cell. Use the contact lengths of the wall's level (cellgen.py writes them "
+                 "beside the data file, DATA.lmp; tools/cellmech/params.py LEVELS)",
+                 r0wk, w, k, MIN(w, k), MAX(w, k), MIN_R0_EDGE, edge, nedge / 3.0,
+                 MIN_R0_EDGE * edge);
+    }
+  }
+}
 
 /* ----------------------------------------------------------------------
    pair_style cell/virtual reach

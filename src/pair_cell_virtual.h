@@ -36,6 +36,9 @@ class PairCellVirtual : public PairCellLJ84 {
   // types with a cell/virtual coefficient: under pair_style hybrid the neighbour list skips the
   // others, so a central node of such a type has no list to walk
   std::vector<char> listed;
+  // r0 must be at least this fraction of the wall's mean triangle edge (check_contact_distance)
+  static constexpr double MIN_R0_EDGE = 0.5;
+  void check_contact_distance();
 };
 
 }    // namespace LAMMPS_NS
