@@ -45,7 +45,7 @@ COARSE = dict(T.COARSE)
 # a record every 0.06 us: whole outer steps for respa 1, 2, 3 (in.compress counts every in dt)
 NSTATES = 6      # inflated microstates the respa-Verlet comparison is averaged over
 RUN = dict(COARSE, dir=T.INPUTS, restart="inflated.restart", vplate=0.5, strain=0.10, every=60)
-COLUMNS = ("t", "eps", "Ftop", "Fbot", "Feq", "P", "broken", "leak", "V", "Vfluid", "pz")
+COLUMNS = ("t", "eps", "Ftop", "Fbot", "Feq", "P", "broken", "leak", "V", "Vfluid", "pz", "ke", "W")
 
 
 def compress(d, tag, text=None, check=True, nprocs=1, **extra):

@@ -10,11 +10,14 @@ import os
 import numpy as np
 
 from ..launch import stage_times
+from ..quasistatic import KE, WORK
 
-# fix ave/time files of the inputs (after the step column)
+# fix ave/time files of the inputs (after the step column); COMPRESS ends with the kinetic energy and
+# the plate's work of the quasi-static check (cellmech.quasistatic; records older than issue 29
+# lack them and load() reads them as zeros)
 COMPRESS = ["time_us", "strain", "stress_kPa", "F_top_nN", "F_bottom_nN", "P_mean_kPa", "P_min_kPa",
             "P_max_kPa", "fluid_mass_pg", "broken_tethers", "debonded_bonds", "debonded_area_um2",
-            "glued_area_um2"]
+            "glued_area_um2", KE, WORK]
 LEAKS = ["time_us", "strain", "leaked_particles"]
 INFLATE = ["time_us", "volume_um3", "fluid_mass_pg", "P_mean_kPa", "P_min_kPa", "P_max_kPa",
            "stretch_mean", "lamella_bonds", "glued_area_um2", "broken_tethers", "debonded_bonds"]
