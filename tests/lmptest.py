@@ -110,6 +110,21 @@ group           fluid type 2
 
 # A periodic box of SPH fluid (type 1) and fixed SPH wall particles (type 2) on a lattice, for
 # the fluid tests without a cell: the lines before the box is made, and those after its atoms are.
+# a tissue data file read with tissue-model.lmp (units micro, the fields of cellgen.py tissue);
+# fill in data and special with str.format, ${{dir}} stays a LAMMPS variable
+TISSUE_HEAD = """
+units           micro
+atom_style      molecular
+boundary        m m m
+atom_modify     map array
+variable        Pi index -364.0
+variable        Lp index 10.0
+variable        mu index 10.0
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 d_alam ghost yes
+read_data       {data} fix cell NULL cell extra/special/per/atom {special}
+include         ${{dir}}/tissue-model.lmp
+"""
+
 SPH_BOX_HEAD = """
 units           micro
 atom_style      molecular

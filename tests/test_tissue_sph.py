@@ -83,18 +83,7 @@ COARSE = dict(T.COARSE)
 NSTEPS = 6000
 # one fix cell/fluid per cell: tissue-model.lmp's single osmosis fix is replaced by two, each on
 # the fluid of one cell with its own osmotic potential; leaks yes: fluid outside its own wall
-TWO = """
-units           micro
-atom_style      molecular
-boundary        m m m
-atom_modify     map array
-variable        Pi index -364.0
-variable        Lp index 10.0
-variable        mu index 10.0
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 d_alam ghost yes
-read_data       two.data fix cell NULL cell extra/special/per/atom {special}
-include         ${{dir}}/tissue-model.lmp
-unfix           osmosis
+TWO = T.TISSUE_HEAD + """unfix           osmosis
 group           c1 molecule 1
 group           c2 molecule 2
 group           f1 intersect fluid c1
@@ -129,7 +118,7 @@ def two_cells():
     T.cellgen("tissue", "-o", "two.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
               "--nfluid", 440, cwd=d)
     special = json.load(open(os.path.join(d, "two.json")))["extra_special_per_atom"]
-    T.lmp(TWO.format(special=special, pi1=PI[0], pi2=PI[1], nsteps=NSTEPS), cwd=d,
+    T.lmp(TWO.format(data="two.data", special=special, pi1=PI[0], pi2=PI[1], nsteps=NSTEPS), cwd=d,
           variables=dict(COARSE, dir=T.INPUTS), log="log.two")
     a = T.load(os.path.join(d, "two.dat"))
     step, M, U, X, P, N, L = a[:, 0], a[:, 1:3], a[:, 3:5], a[:, 5:7], a[:, 7:9], a[:, 9:11], a[:, 11:13]

@@ -27,18 +27,7 @@ import numpy as np
 import lmptest as T
 
 COARSE = dict(T.COARSE)
-HEAD = """
-units           micro
-atom_style      molecular
-boundary        m m m
-atom_modify     map array
-variable        Pi index -364.0
-variable        Lp index 10.0
-variable        mu index 10.0
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 d_alam ghost yes
-read_data       {data} fix cell NULL cell extra/special/per/atom {special}
-include         ${{dir}}/tissue-model.lmp
-unfix           osmosis
+HEAD = T.TISSUE_HEAD + """unfix           osmosis
 timestep        0.001
 """
 # the per-cell rows of the fix (array: ID, W, Pi, psi, exposed, covered, W0; vector: uptake),
@@ -70,20 +59,11 @@ def blocks(path):
 def classes(data):
     """Number of free faces of each cell of an sc block (0 centre, 1 face, 2 edge, 3 corner), by
     molecule ID, from the centroids of its wall nodes in the data file."""
-    lines = open(data).read().split("\n")
-    i = next(k for k, ln in enumerate(lines) if ln.startswith("Atoms"))
-    rows = []
-    for ln in lines[i + 2:]:
-        if not ln.strip():
-            break
-        rows.append([float(v) for v in ln.split()[:6]])
-    a = np.array(rows)
-    wall = a[a[:, 2] == 1]
-    ids = np.unique(wall[:, 1]).astype(int)
-    c = np.array([wall[wall[:, 1] == m, 3:6].mean(0) for m in ids])
+    cen = centroids(data)
+    c = np.array(list(cen.values()))
     lo, hi = c.min(0), c.max(0)
     free = ((np.abs(c - lo) < 1.0) | (np.abs(c - hi) < 1.0)).sum(1)
-    return dict(zip(ids, free))
+    return dict(zip(cen.keys(), free))
 
 
 def run(d, data, special, opts, n, every, tag, nprocs=1, check=True):

@@ -24,19 +24,7 @@ import numpy as np
 import lmptest as T
 
 COARSE = dict(T.COARSE)
-HEAD = """
-units           micro
-atom_style      molecular
-boundary        m m m
-atom_modify     map array
-variable        Pi index -364.0
-variable        Lp index 10.0
-variable        mu index 10.0
-fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 d_alam ghost yes
-"""
-READ = "read_data       two.data fix cell NULL cell extra/special/per/atom {special}\n"
-MODEL = """include         ${{dir}}/tissue-model.lmp
-unfix           osmosis
+MODEL = """unfix           osmosis
 {pre}
 fix             w fluid cell/fluid Pi ${{Pi}} Lp ${{Lp}} {opts}
 compute         lk all cell/props leaks no
@@ -82,9 +70,10 @@ def script(special, opts, nsteps, every, out, pre="", restart=None, run=None):
         # restart files keep neither the per-atom fields' definition nor hybrid's coefficients
         head = ("units           micro\nvariable Pi index -364.0\nvariable Lp index 10.0\n"
                 "variable mu index 10.0\n" + f"read_restart    {restart}\n" +
-                "fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 d_alam ghost yes\n")
+                "fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 d_alam ghost yes\n"
+                "include         ${dir}/tissue-model.lmp\n")
     else:
-        head = HEAD + READ.format(special=special)
+        head = T.TISSUE_HEAD.format(data="two.data", special=special)
     return (head + MODEL.format(pre=pre, opts=opts) +
             RECORD.format(every=every, nsteps=nsteps, out=out) + (run or f"run {nsteps}\n"))
 
