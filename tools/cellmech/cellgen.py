@@ -828,9 +828,9 @@ def build_tissue(args):
     centres = np.array([c["centroid"] for c in cells])
     # The tissue's free surface. "cut": the block's faces are flat, as a sample cut from a fruit.
     # "round" (default): towards its free faces (no neighbour there) a cell is bounded by a dome,
-    # its inertia ellipsoid (the solid ellipsoid with the polyhedron's second moments, about its
-    # centroid: a cube's is the sphere of radius 0.645 a, an elongated cell's is elongated alike),
-    # scaled by --dome. A flat free face cannot carry a pressure without bulging, and inflation
+    # the ellipsoid with the polyhedron's second moments (its shape) and volume, about its
+    # centroid: a cube's is its equivalent sphere (0.620 a), an elongated cell's is elongated
+    # alike; scaled by --dome. A flat free face cannot carry a pressure without bulging, and inflation
     # would first have to stretch it into a dome (to 16% for a 48 um face at 364 kPa in the
     # stiff wall, four times the tethers' critical stretch of 4%): the outer walls would start a
     # compression already torn. The dome acts only where a free face is the nearest plane
@@ -847,7 +847,11 @@ def build_tissue(args):
             f = int((~shared).sum())
             fnormals[i, :f] = c["normals"][~shared]
             fdepth[i, :f] = c["offsets"][~shared] - c["normals"][~shared] @ centres[i]
-            metric[i] = np.linalg.inv(5.0 * c["moment"]) / args.dome ** 2
+            m = np.linalg.inv(5.0 * c["moment"])
+            # scaled to the polyhedron's volume: a cube's is its equivalent sphere, the single
+            # cell's shape; a cell free all round is the paper's sphere of its volume
+            ve = 4.0 / 3.0 * math.pi / math.sqrt(np.linalg.det(m))
+            metric[i] = m * (ve / c["volume"]) ** (2.0 / 3.0) / args.dome ** 2
             rounded = True
         k = int(shared.sum())
         normals[i, :k] = c["normals"][shared]
