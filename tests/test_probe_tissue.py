@@ -7,8 +7,9 @@ check below failed before its fix (the numbers of the unfixed code in brackets).
    their walls). Now in.tissue-inflate reads the level's lengths from DATA.lmp (cellgen.py writes
    it), writes the ones it ran with to RESTART.lmp and tissue-restart.lmp reads them back; a
    missing file is an error unless every length comes from -var; pair cell/sph refuses a kernel
-   support 2s below 1.25 fluid spacings and pair cell/virtual an r0 below half the mean wall
-   edge, on 1 and 2 ranks, while the lengths of every level (3, 4, 5) pass.
+   support 2s below 1.25 fluid spacings (the paper's s in a coarse cell: 1.12) and pair
+   cell/virtual an r0 below half the mean wall edge (the paper's lengths on the coarse pair stop
+   at one of the two), on 1 and 2 ranks, while the lengths of every level (3, 4, 5) pass.
 5. Two wall models at once: tethers plus angle_style cell/membrane ran [exit 0], and a restart of
    a bending wall continued with -var wall tether kept bending its hinges [energy 4736]. Now the
    first is refused, and the second switches them off with a warning (and RESTART.lmp carries the
@@ -108,9 +109,17 @@ def item2(d):
     for n in (1, 2):
         rc, log = lmp(inflate, d, f"log.2-paper{n}", n, dir=INPUTS, data="bare.data", special=SPECIAL[0],
                       reach=LEN["reach"], nsteps=100, nsettle=10, restart_out="paper.restart", **PAPER)
-        refused("2: the paper's s = 3.2 on a coarse tissue", rc, log,
-                r"Pair style cell/sph: the kernel support 2s = 6.4 of fluid type 2 .* spans 1\.21 "
-                r"fluid spacings, below 1\.25.* Use s >= 3\.3", n)
+        # both the paper's s and r0 are too short for it: either refusal will do
+        refused("2: the paper's lengths on a coarse tissue", rc, log,
+                r"Pair style cell/sph: the kernel support 2s = 6\.4 of fluid type 2 .* below 1\.25|"
+                r"Pair style cell/virtual: the contact distance r0 = 1\.6 of wall type 1", n)
+        # the paper's s alone, in a coarse cell free all round (cellgen tissue --n 1 1 1: the
+        # spacing of a single cell, 5.69 um): 2s = 1.12 spacings
+        rc, log = lmp(inflate, d, f"log.2-s{n}", n, dir=INPUTS, data="one.data",
+                      nsteps=100, nsettle=10, restart_out="one.restart", s=PAPER["s"])
+        refused("2: the paper's s = 3.2 in a coarse cell", rc, log,
+                r"Pair style cell/sph: the kernel support 2s = 6\.4 of fluid type 2 .* spans 1\.12 "
+                r"fluid spacings, below 1\.25.* Use s >= 3\.5", n)
         rc, log = lmp(inflate, d, f"log.2-r0{n}", n, dir=INPUTS, data="bare.data", special=SPECIAL[0],
                       reach=LEN["reach"], nsteps=100, nsettle=10, restart_out="paper.restart",
                       **dict(PAPER, s=L3["s"]))
@@ -304,6 +313,8 @@ def main():
                 "bare.restart.lmp", "pair.restart"):
         if os.path.exists(os.path.join(d, old)):
             os.remove(os.path.join(d, old))
+    T.cellgen("tissue", "-o", "one.data", "--lattice", "sc", "--n", 1, 1, 1, "--level", 3,
+              "--nfluid", 440, cwd=d)
     T.cellgen("tissue", "-o", "pair.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
               "--nfluid", 440, cwd=d)
     stats = json.load(open(os.path.join(d, "pair.json")))

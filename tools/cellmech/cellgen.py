@@ -603,7 +603,8 @@ def gauge_radius(u, normals, depth, p, free=None):
         fnormals, fdepth, metric = free
         lfree = log_powers(fnormals, fdepth)
         lw = lse(lfree) - lse(np.concatenate([shared, lfree], axis=2))
-        ldome = 0.5 * p * np.log(np.einsum("cvi,cij,cvj->cv", u, metric, u) * dmin[:, :, 0] ** 2)
+        with np.errstate(divide="ignore"):   # a cell without free faces has no dome (metric 0)
+            ldome = 0.5 * p * np.log(np.einsum("cvi,cij,cvj->cv", u, metric, u) * dmin[:, :, 0] ** 2)
         total = lse(np.stack([total, np.where(np.isfinite(lw), lw + ldome, -np.inf)], -1))
     return dmin[:, :, 0] * np.exp(-total / p)
 
