@@ -187,8 +187,8 @@ void BondCellLamella::check_stiffness()
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int i1 = bondlist[n][0], i2 = bondlist[n][1], type = bondlist[n][2];
     if (type <= 0 || !setflag[type] || !(dc[type] > 0.0)) continue;
-    const double m1 = atom->rmass ? atom->rmass[i1] : atom->mass[atom->type[i1]];
-    const double m2 = atom->rmass ? atom->rmass[i2] : atom->mass[atom->type[i2]];
+    const double m1 = CellMech::atom_mass(atom, i1);
+    const double m2 = CellMech::atom_mass(atom, i2);
     const double k = CellMech::lamella_area(alam, i1, i2) * sigma[type] * M_E / dc[type];
     const double w = sqrt(k * (1.0 / m1 + 1.0 / m2)) * dt;
     if (!(w <= mine.w)) {
@@ -206,8 +206,8 @@ void BondCellLamella::check_stiffness()
     info[1] = (double) atom->tag[i1];
     info[2] = (double) atom->tag[i2];
     info[3] = CellMech::lamella_area(alam, i1, i2);
-    info[4] = atom->rmass ? atom->rmass[i1] : atom->mass[atom->type[i1]];
-    info[5] = atom->rmass ? atom->rmass[i2] : atom->mass[atom->type[i2]];
+    info[4] = CellMech::atom_mass(atom, i1);
+    info[5] = CellMech::atom_mass(atom, i2);
     info[6] = kmax;
   }
   MPI_Bcast(info, 7, MPI_DOUBLE, worst.rank, world);

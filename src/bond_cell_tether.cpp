@@ -344,7 +344,7 @@ void BondCellTether::check_timestep()
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
       if (type > 0 && setflag[type])
-        mlocal = MIN(mlocal, atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
+        mlocal = MIN(mlocal, CellMech::atom_mass(atom, i));
     }
   MPI_Allreduce(&mlocal, &mmin, 1, MPI_DOUBLE, MPI_MIN, world);
   if (kmax == 0.0 || !(mmin > 0.0) || mmin == HUGE_VAL) return;

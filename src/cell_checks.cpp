@@ -70,11 +70,6 @@ namespace {
     static const double *of(FixViscous *fix) { return fix->*(&ViscousGamma::gamma); }
   };
 
-  double atom_mass(const Atom *atom, int i)
-  {
-    return atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
-  }
-
   // the largest gamma dt / (2 m) of the viscous fixes that act on atom i (ghost or local), with the
   // fix and its gamma; 0 if none acts on it
   struct Drag {
@@ -124,6 +119,11 @@ namespace {
   }
 
 }    // namespace
+
+double atom_mass(const Atom *atom, int i)
+{
+  return atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
+}
 
 std::string timestep_hint(LAMMPS *lmp)
 {

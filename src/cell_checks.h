@@ -10,6 +10,7 @@
 #include <string>
 
 namespace LAMMPS_NS {
+class Atom;
 class LAMMPS;
 }
 
@@ -57,6 +58,9 @@ void check_step_motion(LAMMPS_NS::LAMMPS *lmp, const std::string &style);
 // only, not a run 0, a run without an integrator, a minimisation, or the init of a command that
 // needs one (delete_bonds, write_data, ...), which may come before the input sets its time step.
 bool will_step(LAMMPS_NS::LAMMPS *lmp);
+
+// the mass of atom i: its per-atom rmass where the system has one, else its type's
+double atom_mass(const LAMMPS_NS::Atom *atom, int i);
 
 // fix viscous adds f = -gamma v once per step: explicit, so each step multiplies a velocity by
 // about 1 - gamma dt / m, which overshoots and grows once gamma dt > 2 m. Stops the run at its
