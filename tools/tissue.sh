@@ -40,8 +40,8 @@ py=/usr/bin/python3
 # per resolution: block size, inflation steps, compression (speed, strain), impact (strain, hold),
 # pull travel, every (compress), table interval
 case "$RES" in
-  coarse) NB="3 3 3"; NINFL=6000; VC=2; EPSC=0.3; EPSI=0.15; HOLDI=10; PULL=40; EVC=200; TAB=1000 ;;
-  small)  NB="2 2 2"; NINFL=3000; VC=4; EPSC=0.2; EPSI=0.1;  HOLDI=2;  PULL=20; EVC=100; TAB=500 ;;
+  coarse) NB="3 3 3"; NINFL=20000; VC=2; EPSC=0.3; EPSI=0.15; HOLDI=10; PULL=40; EVC=200; TAB=1000 ;;
+  small)  NB="2 2 2"; NINFL=10000; VC=4; EPSC=0.2; EPSI=0.1;  HOLDI=2;  PULL=20; EVC=100; TAB=500 ;;
   *) echo "RES must be coarse or small, got '$RES'" >&2; exit 2 ;;
 esac
 out=${OUT:-$here/results/tissue-$RES$wall_tag}

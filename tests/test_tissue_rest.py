@@ -1,0 +1,71 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Issue 29: an inflated tissue must be at rest when an experiment starts, and whole.
+
+Measured before this test (2x2x2 coarse block, the main job's in.tissue-inflate: 6000 steps
+undamped at Lp 10, then the 2000-step settle): the fast osmosis drove flows of about 20 m/s
+(kinetic energy 5e7 nN um at 1 us) that peeled 683 of the 1212 lamella bonds (58% of the glued
+area); continued at the physical Lp, the block lost 25-40 kPa of turgor as its fluid went on
+spreading into the room the generator leaves at the wall, and its kinetic energy grew from 1e2 to
+1e6 nN um within 15 us with no plate touching it: a slow compression measured that flow. The
+inflation now runs 20 us under a drag (in.tissue-inflate's `damp`; zero at rest, it leaves the
+equilibrium alone).
+
+The glued pair (cellgen.py tissue --n 1 1 2, coarse), inflated with in.tissue-inflate's defaults
+to its turgor (Pi -364 kPa), then left alone for 8 us at the physical Lp and water's viscosity
+(tissue-restart.lmp, as every experiment continues). Asserted:
+ * the inflation debonds no lamella bond (the glued area is the generator's);
+ * left alone, its motion does not grow: the rms speed of its particles stays below 0.1 m/s.
+   Measured: 0.04-0.08 m/s (the settle's own, with the osmosis still on); the main job's former
+   inflation (6000 steps undamped, Lp 10) leaves a pair whose rms speed grows from 0.5 to 1.8 m/s
+   over the 8 us. What is left in.tissue-compress takes out before its plates move (its `rest`,
+   5% of the plate speed);
+ * its mean pressure stays within 1% of the turgor it was inflated to (364 kPa): the fluid has
+   filled its cell. Measured 0.28%; the former inflation swings between 355 and 429 kPa (18%),
+   and debonds 4 of the pair's 97 lamella bonds.
+About 20 s on one core.
+"""
+import os
+
+import numpy as np
+
+import lmptest as T
+
+PI = -364.0
+VMAX = 0.1                     # m/s (docstring)
+FREE = 8000                    # steps left alone after the inflation, 8 us
+FREE_RUN = """
+variable        restart index pair.restart
+include         ${dir}/tissue-restart.lmp
+compute         ke all ke
+variable        vrms equal sqrt(2*c_ke/mass(all))
+fix             rec all ave/time 500 1 500 v_Pm v_vrms file free.dat format " %.10g"
+timestep        ${dt}
+run             ${free}
+"""
+
+
+def main():
+    d = T.workdir("tissue_rest")
+    T.cellgen("tissue", "-o", "pair.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
+              "--nfluid", 440, cwd=d)
+    T.lmp(f"{T.INPUTS}/in.tissue-inflate", cwd=d, log="log.inflate", variables=dict(
+        dir=T.INPUTS, data="pair.data", Pi=PI, every=1000, restart_out="pair.restart"))
+    rec = np.loadtxt(os.path.join(d, "tissue-inflate.dat"))
+    # columns: step t V M Pm Pmin Pmax lam nlam glued broken debonded
+    glued0, glued, debonded = rec[0, 9], rec[-1, 9], rec[-1, 11]
+    T.check("the inflation debonds no lamella bond", debonded == 0 and glued == glued0,
+            f"{debonded:.0f} debonded, glued {glued:.1f} of the generator's {glued0:.1f} um^2")
+    T.lmp(FREE_RUN, cwd=d, log="log.free", variables=dict(dir=T.INPUTS, Pi=PI, Lp=1.0e-9, mu=1.0, free=FREE))
+    free = np.loadtxt(os.path.join(d, "free.dat"))
+    p, vrms = free[:, 1], free[:, 2]
+    drift = np.max(np.abs(p / -PI - 1))
+    print(f"left alone {FREE} steps: rms speed {vrms.min():.2e}-{vrms.max():.2e} m/s, "
+          f"mean pressure {p.min():.2f}-{p.max():.2f} kPa")
+    T.check(f"left alone, its motion does not grow (rms speed < {VMAX} m/s)", vrms.max() < VMAX,
+            f"largest {vrms.max():.3g} m/s")
+    T.check("its turgor stays within 1% of the inflation's", drift < 0.01, f"{drift:.2%}")
+    T.finish()
+
+
+if __name__ == "__main__":
+    main()
