@@ -128,7 +128,7 @@ def item2(d):
                 r"type 2 .* below 0\.5 times the mean edge 4\.\d+ of the wall's 2560 triangles", n)
 
     # a continued run takes the lengths of RESTART.lmp; a -var still wins
-    short = dict(dir=INPUTS, restart="default.restart", strain=0.005, vplate=4, every=50,
+    short = dict(dir=INPUTS, restart="default.restart", strain=0.005, ramp=0, vplate=4, every=50,
                  out="c.dat", cells="c-cells.dat", pairs="c-pairs.dat")
     compress = os.path.join(INPUTS, "in.tissue-compress")
     rc, log = lmp(compress, d, "log.2-compress", **short)
