@@ -46,6 +46,8 @@ SHORT = {
                                            strain=0.02, hold=0.2, tabevery=100, img=300)),
     "in.tissue-pair": ("pair.data", dict(COARSE, restart="pair-short.restart", vplate=4, press=0.02,
                                          vpull=4, pull=0.5, every=50)),
+    "in.tissue-tension": ("pair.data", dict(COARSE, restart="pair-short.restart", vpull=4, strain=0.02,
+                                            every=50, tabevery=100)),
     # water: one cell against two external potentials; the pair with cells of different Pi
     "in.water-potential": ("cell3.data", dict(COARSE, restart="short.restart", nlevels=1, nsteps=100,
                                               nave=50)),

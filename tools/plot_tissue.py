@@ -6,6 +6,9 @@ loses a tether) and cells coming apart (a lamella bond lets go).
 
   plot_tissue.py DIR [PREFIX]      reads DIR/PREFIX.dat (default tissue-compress), writes
                                    DIR/tissue-stress-strain.csv and .png
+  plot_tissue.py DIR tissue-tension  the pull of in.tissue-tension (a PREFIX with "tension"):
+                                   DIR/tissue-tension.csv and .png, failure stress (the peak of
+                                   the smoothed stress), strain at the peak, failure mode
 
 It also says whether the compression was quasi-static (cellmech.quasistatic) from 2% strain
 (TISSUE_FROM) to the first wall rupture or the end: the table and verdict are printed and written
@@ -20,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 # the columns of in.tissue-compress's file and the smoothing are the tissue report's
-from cellmech.tissue.tissuedata import COMPRESS as COLS, smooth  # noqa: E402
+from cellmech.tissue.tissuedata import COMPRESS as COLS, TENSION, smooth  # noqa: E402
 from cellmech import quasistatic as Q  # noqa: E402
 
 # issue 29's range for the tissue: from 2% strain (the first contacts of a block's uneven faces
@@ -28,9 +31,9 @@ from cellmech import quasistatic as Q  # noqa: E402
 TISSUE_FROM = 0.02
 
 
-def load(path):
+def load(path, cols=COLS):
     a = np.loadtxt(path, comments="#", ndmin=2)
-    return {name: a[:, k + 1] for k, name in enumerate(COLS)}
+    return {name: a[:, k + 1] for k, name in enumerate(cols)}
 
 
 def events(strain, count):
@@ -86,5 +89,81 @@ def main(out, prefix="tissue-compress"):
           + "; ".join(first))
 
 
+def failure(d, window=0.01):
+    """The failure of a pull (in.tissue-tension's record, TENSION columns): the stress smoothed over
+    `window` of strain (longer than the walls' ringing, shorter than the failure), its peak (the
+    failure stress) and the strain there, and the failure mode: which kind of event, broken tethers
+    (wall rupture) or debonded lamella bonds (cells coming apart), begins first and how many of
+    each there are up to the peak and to the end. Counts are from the record's start (bonds that
+    let go before it, in the inflation or a hold, are not the pull's)."""
+    ds = np.median(np.diff(d["strain"])) if len(d["strain"]) > 1 else 1.0
+    s = smooth(d["stress_kPa"], max(1, int(round(window / ds))))
+    k = int(np.argmax(s))
+    out = dict(smoothed=s, peak_kPa=float(s[k]), strain_at_peak=float(d["strain"][k]), peak_index=k)
+    first = {}
+    for kind, col in (("wall rupture", "broken_tethers"), ("lamella debonding", "debonded_bonds")):
+        c = np.asarray(d[col], float) - d[col][0]
+        out[col + "_to_peak"] = int(round(c[k]))
+        out[col] = int(round(c[-1]))
+        rise = np.nonzero(c > 0.5)[0]
+        if len(rise):
+            first[kind] = float(d["strain"][rise[0]])
+    out["first"] = first
+    # the mode: the kind that begins first; a tie (the same record) goes to the larger count at the peak
+    if not first:
+        out["mode"] = "none (no wall ruptured, no lamella bond let go)"
+    else:
+        count = {"wall rupture": out["broken_tethers_to_peak"],
+                 "lamella debonding": out["debonded_bonds_to_peak"]}
+        out["mode"] = min(first, key=lambda m: (first[m], -count[m]))
+    # the stress after the peak: the record's last smoothed value against the peak (a failure drops)
+    out["final_kPa"] = float(s[-1])
+    return out
+
+
+def tension(out, prefix="tissue-tension"):
+    """in.tissue-tension's record: stress-strain CSV and PNG with the events marked, failure stress
+    and strain, failure mode, and the quasi-static verdict (the two grips' forces over strain windows,
+    KE against the top grip's work) from the start to the peak. Returns (failure(), Verdict)."""
+    d = load(f"{out}/{prefix}.dat", TENSION)
+    f = failure(d)
+    s = f["smoothed"]
+    np.savetxt(f"{out}/{prefix}.csv", np.column_stack([d[k] for k in TENSION] + [s]), delimiter=",",
+               header=",".join(TENSION + ["stress_smoothed_kPa"]), comments="")
+    # judged up to the peak: beyond it the block comes apart at a speed no grip sets
+    bal, en, _, v = Q.check(d, float(d["strain"][0]), max(f["strain_at_peak"], Q.WINDOW))
+    text = Q.report(bal, en, None, v, "tissue tension")
+    with open(f"{out}/{prefix}-quasistatic.txt", "w") as fh:
+        fh.write(text + "\n")
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    ax.plot(d["strain"], d["stress_kPa"], color="0.75", lw=0.8, label="stress (raw)")
+    ax.plot(d["strain"], s, color="k", lw=1.8, label="stress (1% strain window)")
+    for col, kw, name in (("broken_tethers", dict(color="red"), "wall rupture"),
+                          ("debonded_bonds", dict(color="tab:green", marker="s"), "lamella debonding")):
+        e, n = events(d["strain"], d[col])
+        if len(e):
+            ax.scatter(e, np.interp(e, d["strain"], s), s=12 + 4 * np.sqrt(n), zorder=3, **kw,
+                       label=f"{name} ({f[col]} {'tethers' if col == 'broken_tethers' else 'bonds'})")
+            ax.axvline(e[0], color=kw["color"], ls="--", lw=0.8)
+    ax.plot([f["strain_at_peak"]], [f["peak_kPa"]], "kv", ms=8, label=f"failure stress {f['peak_kPa']:.3g} kPa")
+    ax.axhline(0, color="0.5", lw=0.5)
+    ax.set_xlabel("strain (top grip travel / initial height)")
+    ax.set_ylabel("stress (top grip force / initial cross-section, kPa)")
+    ax.set_title(f"tissue block pulled apart ({v.label}); failure mode: {f['mode']}")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(f"{out}/{prefix}.png", dpi=120)
+    print(text)
+    print(f"tension ({v.label}): failure stress {f['peak_kPa']:.4g} kPa at strain {f['strain_at_peak']:.4f}; "
+          f"failure mode {f['mode']} (to the peak: {f['broken_tethers_to_peak']} broken tethers, "
+          f"{f['debonded_bonds_to_peak']} debonded bonds; to the end: {f['broken_tethers']} and "
+          f"{f['debonded_bonds']}); final stress {f['final_kPa']:.4g} kPa")
+    return f, v
+
+
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else ".", *sys.argv[2:3])
+    args = sys.argv[1:3]
+    if len(args) > 1 and "tension" in args[1]:
+        tension(*args)
+    else:
+        main(args[0] if args else ".", *args[1:2])

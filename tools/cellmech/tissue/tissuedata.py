@@ -18,6 +18,9 @@ from ..quasistatic import KE, WORK
 COMPRESS = ["time_us", "strain", "stress_kPa", "F_top_nN", "F_bottom_nN", "P_mean_kPa", "P_min_kPa",
             "P_max_kPa", "fluid_mass_pg", "broken_tethers", "debonded_bonds", "debonded_area_um2",
             "glued_area_um2", KE, WORK]
+# in.tissue-tension writes the same layout: the grips take the plates' columns (stress and forces
+# positive in tension, the top grip's work as the plate's), so the quasi-static check reads both
+TENSION = COMPRESS
 LEAKS = ["time_us", "strain", "leaked_particles"]
 INFLATE = ["time_us", "volume_um3", "fluid_mass_pg", "P_mean_kPa", "P_min_kPa", "P_max_kPa",
            "stretch_mean", "lamella_bonds", "glued_area_um2", "broken_tethers", "debonded_bonds"]
