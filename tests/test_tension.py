@@ -28,8 +28,8 @@ its reason:
    cell/contacts does not count (a column for it is left to issue 30's topology work); the pull
    opens the faces past that reach by 1.5% strain. The sign is asserted: that force pushes;
 4. the mid-plane load rises to a peak and drops (the lamella softens past delta_c and lets go), and
-   so does the top grip's stress smoothed over 1% of strain (plot_tissue's failure stress);
-5. failure mode: the lamella debonds, no wall ruptures (lamf 0), and plot_tissue's failure() names
+   so does the top grip's stress smoothed over 1% of strain (tissuedata.failure(), plot_tissue's failure stress);
+5. failure mode: the lamella debonds, no wall ruptures (lamf 0), and tissuedata.failure() names
    debonding; the debonded area is the same in the record (compute cell/props, halved) and in
    compute cell/contacts (column 6) at every record, to the table's printed digits (fix ave/time
    writes 6 significant digits: 1e-5 of the total over 12 pairs).
@@ -41,16 +41,13 @@ at 1.25% strain (inertia); 86 bonds (1658 um^2) debonded, no tether broken. Abou
 """
 import json
 import os
-import sys
 
 import numpy as np
 
 import lmptest as T
 from cellmech import quasistatic as Q
-from cellmech.tissue.tissuedata import TENSION, PAIRS, PROPS, load, load_table
+from cellmech.tissue.tissuedata import TENSION, PAIRS, PROPS, failure, load, load_table
 
-sys.path.insert(0, os.path.join(T.ROOT, "tools"))
-from plot_tissue import failure  # noqa: E402
 
 SIGL, GL = 30.0, 100.0          # kPa, pg/us^2
 PULL = dict(lamf=0, sigl=SIGL, Gl=GL, mu=10.0, ramp=0.01, vpull=1.0, strain=0.06, every=100,

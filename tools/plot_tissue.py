@@ -23,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 # the columns of in.tissue-compress's file and the smoothing are the tissue report's
-from cellmech.tissue.tissuedata import COMPRESS as COLS, TENSION, smooth  # noqa: E402
+from cellmech.tissue.tissuedata import COMPRESS as COLS, TENSION, failure, smooth  # noqa: E402
 from cellmech import quasistatic as Q  # noqa: E402
 
 # issue 29's range for the tissue: from 2% strain (the first contacts of a block's uneven faces
@@ -87,38 +87,6 @@ def main(out, prefix="tissue-compress"):
     print(text)
     print(f"tissue ({v.label}): peak stress {s[k]:.4g} kPa at strain {d['strain'][k]:.4f}; "
           + "; ".join(first))
-
-
-def failure(d, window=0.01):
-    """The failure of a pull (in.tissue-tension's record, TENSION columns): the stress smoothed over
-    `window` of strain (longer than the walls' ringing, shorter than the failure), its peak (the
-    failure stress) and the strain there, and the failure mode: which kind of event, broken tethers
-    (wall rupture) or debonded lamella bonds (cells coming apart), begins first and how many of
-    each there are up to the peak and to the end. Counts are from the record's start (bonds that
-    let go before it, in the inflation or a hold, are not the pull's)."""
-    ds = np.median(np.diff(d["strain"])) if len(d["strain"]) > 1 else 1.0
-    s = smooth(d["stress_kPa"], max(1, int(round(window / ds))))
-    k = int(np.argmax(s))
-    out = dict(smoothed=s, peak_kPa=float(s[k]), strain_at_peak=float(d["strain"][k]), peak_index=k)
-    first = {}
-    for kind, col in (("wall rupture", "broken_tethers"), ("lamella debonding", "debonded_bonds")):
-        c = np.asarray(d[col], float) - d[col][0]
-        out[col + "_to_peak"] = int(round(c[k]))
-        out[col] = int(round(c[-1]))
-        rise = np.nonzero(c > 0.5)[0]
-        if len(rise):
-            first[kind] = float(d["strain"][rise[0]])
-    out["first"] = first
-    # the mode: the kind that begins first; a tie (the same record) goes to the larger count at the peak
-    if not first:
-        out["mode"] = "none (no wall ruptured, no lamella bond let go)"
-    else:
-        count = {"wall rupture": out["broken_tethers_to_peak"],
-                 "lamella debonding": out["debonded_bonds_to_peak"]}
-        out["mode"] = min(first, key=lambda m: (first[m], -count[m]))
-    # the stress after the peak: the record's last smoothed value against the peak (a failure drops)
-    out["final_kPa"] = float(s[-1])
-    return out
 
 
 def tension(out, prefix="tissue-tension"):

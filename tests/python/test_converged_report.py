@@ -1,0 +1,38 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""cellmech.tissue.converged (issue 29): the modulus is the slope of the line through the stress
+over its window, and a condition counts as converged only when the plates balance and the two
+speeds' curves agree."""
+import numpy as np
+
+from cellmech import quasistatic as Q
+from cellmech.tissue import converged as C
+from cellmech.tissue.tissuedata import COMPRESS
+
+
+def record(strain, stress, a0=1.0e4, ke=0.0):
+    d = {name: np.zeros_like(strain) for name in COMPRESS}
+    d["strain"], d["stress_kPa"] = strain, stress
+    d["F_top_nN"] = d["F_bottom_nN"] = stress * a0
+    d["time_us"] = strain * 100.0
+    d["P_mean_kPa"] = np.full_like(strain, 364.0)
+    d[Q.KE] = np.full_like(strain, ke)
+    d[Q.WORK] = np.cumsum(stress) * 1e3 + 1.0
+    return d
+
+
+def test_modulus_is_the_slope_over_its_window():
+    e = np.linspace(0.0, 0.1, 201)
+    s = 700.0 * e + 3.0 * np.sin(200 * e) * (e > 0.05)     # linear in the window, noisy after it
+    assert abs(C.modulus(record(e, s), 0.02, 0.04) - 700.0) < 1e-6
+
+
+def test_converged_needs_balance_and_agreement_of_speeds():
+    e = np.linspace(0.0, 0.1, 201)
+    slow = record(e, 800.0 * e)
+    same = C.measure(slow, record(e, 800.0 * e))
+    assert same["converged"] and abs(same["E"] - 800.0) < 1e-6
+    moved = C.measure(slow, record(e, 900.0 * e))          # the fast curve 12.5% stiffer
+    assert not moved["converged"] and moved["rate"] > Q.TOL_RATE
+    off = record(e, 800.0 * e)
+    off["F_bottom_nN"] = 0.8 * off["F_top_nN"]             # plates 22% apart
+    assert not C.measure(off, record(e, 800.0 * e))["converged"]

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
+# Tissue compression at converged plate speeds (issue 29): the coarse 2x2x2 block (cellgen.py
+# tissue --lattice sc --n 2 2 2 --level 3) inflated at three turgors (Pi -100, -364, -600 kPa) with
+# a strong (sigl 300 kPa, Gl 1 J/m^2) and a weak (30 kPa, 0.1 J/m^2) middle lamella (each block is
+# inflated with the lamella it is compressed with: the inflated equilibrium depends on it), then
+# compressed to failure (lamf 1.04) with in.tissue-compress's quasi-static protocol at two speeds,
+# V and V/2 (the rate evidence), and a report (tools/cellmech/tissue/converged.py): converged
+# modulus with its strain window, failure stress and strain, failure mode, the quasi-static check
+# of each run and the curve of V against V/2, side by side with parenchyma measurements.
+#   bash tools/tissue-converged.sh                 # results/tissue-converged (~20 min on 2 cores)
+#   REPORT=docs bash tools/tissue-converged.sh     # the committed report: docs/tissue-quasistatic.md
+# Environment: OUT (run folder), V (fast speed, m/s, default 0.5), STRAIN (0.2), JOBS (runs at a
+# time, 2), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report).
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+[ -f "$here/build/cellmech-env.sh" ] || bash "$here/tools/setup.sh"
+source "$here/build/cellmech-env.sh"
+source "$here/tools/common.sh"
+V=${V:-0.5}
+STRAIN=${STRAIN:-0.2}
+JOBS=${JOBS:-2}
+out=$(realpath -m "${OUT:-$here/results/tissue-converged}")
+report=${REPORT:-$out}
+[ "$report" = docs ] && report=$here/docs
+INPUTS=$here/lammps-inputs
+py=/usr/bin/python3
+mkdir -p "$out"
+cd "$out"
+want() { [ -z "${ONLY:-}" ] || [[ " $ONLY " == *" $1 "* ]]; }
+# stage NAME CMD...: in its own folder, its wall time in times.txt
+stage() {
+  local name=$1; shift
+  want "$name" || return 0
+  local t0 rc=0; t0=$(date +%s)
+  mkdir -p "$out/$name"
+  (cd "$out/$name" && "$@") || rc=$?
+  echo "$name $(( $(date +%s) - t0 )) $([ $rc -eq 0 ] && echo ok || echo "failed(rc=$rc)")" >> "$out/times.txt"
+  [ $rc -eq 0 ] || echo "  $name failed, see $out/$name/log.lammps" >&2
+}
+bg() { while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done; stage "$@" & }
+declare -A SIGL=([strong]=300 [weak]=30) GL=([strong]=1000 [weak]=100)
+PIS="-100 -364 -600"
+read -r NF < <(level_params 3 nfluid)
+gen() { $py "$here/tools/cellgen.py" tissue -o block.data --lattice sc --n 2 2 2 --level 3 --nfluid "$NF" \
+          --stats block.json > block.txt; }
+stage gen gen
+infl() {  # PI LAM
+  lmp -in "$INPUTS/in.tissue-inflate" -screen none -var dir "$INPUTS" -var data "$out/gen/block.data" \
+    -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" -var every 1000 -var restart_out block.restart
+}
+for pi in $PIS; do for lam in strong weak; do bg "inflate$pi-$lam" infl "$pi" "$lam"; done; done
+wait
+comp() {  # PI LAM SPEED
+  lmp -in "$INPUTS/in.tissue-compress" -screen none -var dir "$INPUTS" \
+    -var restart "$out/inflate$1-$2/block.restart" -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" \
+    -var lamf 1.04 -var vplate "$3" -var strain "$STRAIN" -var every 200 -var tabevery 4000 -var leakevery 0
+}
+half=$($py -c "print($V / 2)")
+for v in "$half" "$V"; do for pi in $PIS; do for lam in strong weak; do
+  bg "compress$pi-$lam-$v" comp "$pi" "$lam" "$v"
+done; done; done
+wait
+{ echo "V=$V STRAIN=$STRAIN PIS='$PIS' on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')"; } > run-info.txt
+if want report; then
+  mkdir -p "$report"
+  (cd "$here/tools" && $py -m cellmech.tissue.converged "$out" "$report" "$V")
+fi
