@@ -11,7 +11,11 @@
 #   bash tools/tissue-converged.sh                 # results/tissue-converged (~20 min on 2 cores)
 #   REPORT=docs bash tools/tissue-converged.sh     # the committed report: docs/tissue-quasistatic.md
 # Environment: OUT (run folder), V (fast speed, m/s, default 0.5), STRAIN (0.2), JOBS (runs at a
-# time, 2), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report).
+# time, 2), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
+# PIS (turgors, default "-100 -364 -600"), SPEEDS (default "V/2 V"). A condition that has not
+# converged gets the next rung into the same folder, e.g.
+#   OUT=... PIS=-100 SPEEDS=0.125 ONLY="compress-100-strong-0.125 compress-100-weak-0.125 report"
+# and the report judges each condition on the two slowest speeds it finds (V/2 against V).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 [ -f "$here/build/cellmech-env.sh" ] || bash "$here/tools/setup.sh"
@@ -40,7 +44,7 @@ stage() {
 }
 bg() { while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done; stage "$@" & }
 declare -A SIGL=([strong]=300 [weak]=30) GL=([strong]=1000 [weak]=100)
-PIS="-100 -364 -600"
+PIS=${PIS:-"-100 -364 -600"}
 read -r NF < <(level_params 3 nfluid)
 gen() { $py "$here/tools/cellgen.py" tissue -o block.data --lattice sc --n 2 2 2 --level 3 --nfluid "$NF" \
           --stats block.json > block.txt; }
@@ -57,12 +61,13 @@ comp() {  # PI LAM SPEED
     -var lamf 1.04 -var vplate "$3" -var strain "$STRAIN" -var every 200 -var tabevery 4000 -var leakevery 0
 }
 half=$($py -c "print($V / 2)")
-for v in "$half" "$V"; do for pi in $PIS; do for lam in strong weak; do
+SPEEDS=${SPEEDS:-"$half $V"}
+for v in $SPEEDS; do for pi in $PIS; do for lam in strong weak; do
   bg "compress$pi-$lam-$v" comp "$pi" "$lam" "$v"
 done; done; done
 wait
-{ echo "V=$V STRAIN=$STRAIN PIS='$PIS' on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')"; } > run-info.txt
+{ echo "STRAIN=$STRAIN, last runs SPEEDS='$SPEEDS' PIS='$PIS' on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')"; } >> run-info.txt
 if want report; then
   mkdir -p "$report"
-  (cd "$here/tools" && $py -m cellmech.tissue.converged "$out" "$report" "$V")
+  (cd "$here/tools" && $py -m cellmech.tissue.converged "$out" "$report")
 fi

@@ -36,3 +36,14 @@ def test_converged_needs_balance_and_agreement_of_speeds():
     off = record(e, 800.0 * e)
     off["F_bottom_nN"] = 0.8 * off["F_top_nN"]             # plates 22% apart
     assert not C.measure(off, record(e, 800.0 * e))["converged"]
+
+
+def test_each_condition_is_judged_on_its_two_slowest_rungs(tmp_path):
+    e = np.linspace(0.0, 0.1, 21)
+    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
+    for speed in (1.0, 0.5, 0.25, 0.2):          # 0.2 has no rung at twice its speed
+        d = tmp_path / f"compress-364-strong-{speed:g}"
+        d.mkdir()
+        np.savetxt(d / "tissue-compress.dat", rows)
+    found = C.load_runs(str(tmp_path))
+    assert list(found) == [(-364, "strong")] and found[-364, "strong"][0] == 0.25

@@ -2,10 +2,12 @@
 """The report of tools/tissue-converged.sh (issue 29): tissue compression at converged plate speeds,
 side by side with parenchyma measurements.
 
-  python3 -m cellmech.tissue.converged RUNS REPORT V
+  python3 -m cellmech.tissue.converged RUNS REPORT
 
-RUNS holds compress{PI}-{LAM}-{SPEED}/tissue-compress.dat for V and V/2 and the run settings
-(run-info.txt); REPORT gets tissue-quasistatic.md and tissue-quasistatic.png. Per run: the
+RUNS holds compress{PI}-{LAM}-{SPEED}/tissue-compress.dat and the run settings (run-info.txt);
+each condition is judged on the two slowest speeds it has that differ by a factor of 2 (the
+ladder's last rungs: v against 2v). REPORT gets tissue-quasistatic.md and tissue-quasistatic.png.
+Per condition: the
 quasi-static check (cellmech.quasistatic) of the slow run from 2% strain to its first wall rupture,
 the slow curve against the fast one over the same range (rate evidence), the modulus (slope of a
 straight line through the stress over MODULUS_WINDOW), the failure stress (peak of the stress over
@@ -99,27 +101,32 @@ def measure(slow, fast):
                 + ("" if worst <= Q.TOL_RATE else "; curve moves with the speed"))
 
 
-def load_runs(runs, v):
-    half = v / 2
+def load_runs(runs):
+    """{(pi, lam): (v, slow record, fast record)} for the two slowest speeds v and 2v of each
+    condition found in RUNS."""
     out = {}
     for pi in PIS:
         for lam in LAMELLAE:
-            paths = [f"{runs}/compress{pi}-{lam}-{s:g}/tissue-compress.dat" for s in (half, v)]
-            if all(os.path.exists(p) for p in paths):
-                out[pi, lam] = tuple(load(p, COMPRESS) for p in paths)
+            tag = f"compress{pi}-{lam}-"
+            speeds = sorted(float(n[len(tag):]) for n in os.listdir(runs)
+                            if n.startswith(tag) and os.path.exists(f"{runs}/{n}/tissue-compress.dat"))
+            pairs = [(a, b) for a in speeds for b in speeds if abs(b - 2 * a) < 1e-9]
+            if pairs:
+                a, b = pairs[0]
+                out[pi, lam] = (a,) + tuple(load(f"{runs}/{tag}{s:g}/tissue-compress.dat", COMPRESS) for s in (a, b))
     return out
 
 
-def figure(data, path, v):
+def figure(data, path):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     for ax, lam in zip(axes, LAMELLAE):
         for n, pi in enumerate(PIS):
             if (pi, lam) not in data:
                 continue
-            slow, fast = data[pi, lam]
+            v, slow, fast = data[pi, lam]
             c = f"C{n}"
-            ax.plot(slow["strain"], slow["stress_kPa"], color=c, lw=1.2, label=f"Pi {pi} kPa, {v / 2:g} m/s")
-            ax.plot(fast["strain"], fast["stress_kPa"], color=c, lw=0.8, ls="--", label=f"Pi {pi} kPa, {v:g} m/s")
+            ax.plot(slow["strain"], slow["stress_kPa"], color=c, lw=1.2, label=f"Pi {pi} kPa, {v:g} m/s")
+            ax.plot(fast["strain"], fast["stress_kPa"], color=c, lw=0.8, ls="--", label=f"Pi {pi} kPa, {2 * v:g} m/s")
         ax.set_title(f"{lam} lamella (sigl {LAMELLAE[lam][0]:g} kPa, Gc {LAMELLAE[lam][1]:g} J/m^2)", fontsize=10)
         ax.set_xlabel("strain (closing of the plates / initial height)")
         ax.legend(fontsize=7)
@@ -132,19 +139,19 @@ def pct(x):
     return "-" if x is None or not np.isfinite(x) else f"{x:.1%}"
 
 
-def table(rows, v):
-    head = (f"| Pi (kPa) | lamella | P at start (kPa) | modulus {MODULUS_WINDOW[0]:.0%}-{MODULUS_WINDOW[1]:.0%} (kPa) | "
-            f"failure stress (kPa) | strain at peak | first rupture ({v / 2:g}; {v:g} m/s) | first debond | "
-            f"failure mode | judged | plates (worst) | KE/W (worst) | vs {v:g} m/s (worst) | converged from |\n|"
-            + "---|" * 14)
+def table(rows):
+    head = (f"| Pi (kPa) | lamella | speed v (m/s) | P at start (kPa) | modulus {MODULUS_WINDOW[0]:.0%}-"
+            f"{MODULUS_WINDOW[1]:.0%} (kPa) | failure stress (kPa) | strain at peak | first rupture (v; 2v) | "
+            f"first debond | failure mode | judged | plates (worst) | KE/W (worst) | vs 2v (worst) | "
+            "converged from |\n|" + "---|" * 15)
     lines = [head]
     for (pi, lam), m in rows.items():
         f, ff = m["fail"], m["fail_fast"]
         lines.append(
-            f"| {pi} | {lam} | {m['P0']:.0f} | {fmt(m['E'])} | {fmt(f['peak_kPa'])} | {pct(f['strain_at_peak'])} | "
-            f"{pct(f['first'].get('wall rupture'))}; {pct(ff['first'].get('wall rupture'))} | "
-            f"{pct(f['first'].get('lamella debonding'))} | {f['mode']} | {m['judged'][0]:.0%}-{m['judged'][1]:.1%} | "
-            f"{pct(m['balance'])} | {pct(m['ke'])} | {pct(m['rate'])} | "
+            f"| {pi} | {lam} | {m['v']:g} | {m['P0']:.0f} | {fmt(m['E'])} | {fmt(f['peak_kPa'])} | "
+            f"{pct(f['strain_at_peak'])} | {pct(f['first'].get('wall rupture'))}; "
+            f"{pct(ff['first'].get('wall rupture'))} | {pct(f['first'].get('lamella debonding'))} | {f['mode']} | "
+            f"{m['judged'][0]:.0%}-{m['judged'][1]:.1%} | {pct(m['balance'])} | {pct(m['ke'])} | {pct(m['rate'])} | "
             f"{'-' if m['start'] is None else format(m['start'], '.0%')} |")
     return "\n".join(lines)
 
@@ -179,13 +186,13 @@ def mode_trend(rows):
     return "Model: " + "; ".join(f"Pi {pi} {lam}: {m['fail']['mode']}" for (pi, lam), m in rows.items()) + "."
 
 
-def text(rows, v, info):
+def text(rows, info):
     conv = [m for m in rows.values() if m["converged"]]
     fconv = [m for m in rows.values() if m["failure_converged"]]
     Es = [m["E"] for m in conv]
     peaks = [m["fail"]["peak_kPa"] for m in fconv]
     summary = (f"The modulus converged in {len(conv)} of {len(rows)} conditions (plates within 5% and the curve "
-               f"within 5% of {v:g} m/s in every 2% window from the modulus window on, the block still intact)"
+               f"within 5% of twice the speed in every 2% window from the modulus window on, the block still intact)"
                + (f": {fmt(min(Es))}-{fmt(max(Es))} kPa." if conv else ".")
                + f" The failure converged in {len(fconv)} (the first rupture or debond at both speeds within 1% "
                f"strain)" + (f": failure stress {fmt(min(peaks))}-{fmt(max(peaks))} kPa." if fconv else "."))
@@ -198,13 +205,13 @@ def text(rows, v, info):
 48 um, glued by the middle lamella) inflated at three turgors with a strong and a weak lamella, then
 compressed to failure (walls rupture at the paper's critical stretch 1.04) with the quasi-static
 protocol of `in.tissue-compress` (docs/Howto_plates.rst, "A protocol that reaches quasi-static"): at
-rest first, both plates closing after a smooth start, at {v / 2:g} m/s and, as the rate evidence, at
-{v:g} m/s. {summary} Every number is from the {v / 2:g} m/s run; a condition that has not
-converged is a rate study, and its row says so.
+rest first, both plates closing after a smooth start, at the speed v of its row and, as the rate
+evidence, at 2v (the ladder's last two rungs). {summary} Every number is from the run at v; a
+condition that has not converged is a rate study, and its row says so.
 
 ![stress-strain](tissue-quasistatic.png)
 
-{table(rows, v)}
+{table(rows)}
 
 *Modulus*: slope of a straight line through the stress over {MODULUS_WINDOW[0]:.0%}-{MODULUS_WINDOW[1]:.0%}
 strain. *Failure stress*: the peak of the stress over 1% strain windows, with its strain. *First
@@ -213,9 +220,9 @@ rupture*: at both speeds; where they differ, the failure strain has not converge
 *Failure mode*: which kind of failure begins first, wall rupture (a tether breaks) or lamella
 debonding (a lamella bond lets go). *Judged*: from 2% strain to the first rupture of either run.
 *Plates*: the largest (F_top - F_bottom) / mean over 2% windows there; *KE/W*: the largest kinetic
-energy against the plates' work (printed, not judged); *vs {v:g} m/s*: the largest difference of the
+energy against the plates' work (printed, not judged); *vs 2v*: the largest difference of the
 window-mean plate force between the two speeds. *Converged from*: the strain from which every 2%
-window balances within 5% and agrees with {v:g} m/s within 5%; a condition counts as converged when
+window balances within 5% and agrees with 2v within 5%; a condition counts as converged when
 that is at or below the modulus window (no modulus where the block has ruptured before the window
 ends).
 
@@ -250,18 +257,19 @@ rise to the peak for the 2x2x2 block with the weak lamella: docs/Howto_tissue.rs
 
 
 def main(argv=None):
-    runs, report, v = (argv or sys.argv[1:])[:3]
-    v = float(v)
-    data = load_runs(runs, v)
+    runs, report = (argv or sys.argv[1:])[:2]
+    data = load_runs(runs)
     if not data:
-        raise SystemExit(f"converged: no pair of runs at {v / 2:g} and {v:g} m/s in {runs}")
-    rows = {key: measure(slow, fast) for key, (slow, fast) in data.items()}
-    info = open(f"{runs}/run-info.txt").read().strip() if os.path.exists(f"{runs}/run-info.txt") else runs
-    figure(data, f"{report}/tissue-quasistatic.png", v)
-    md = text(rows, v, info)
+        raise SystemExit(f"converged: no condition with runs at v and 2v in {runs}")
+    rows = {}
+    for key, (v, slow, fast) in data.items():
+        rows[key] = dict(measure(slow, fast), v=v)
+    info = "; ".join(open(f"{runs}/run-info.txt").read().split("\n")).strip("; ") \
+        if os.path.exists(f"{runs}/run-info.txt") else runs
+    figure(data, f"{report}/tissue-quasistatic.png")
     with open(f"{report}/tissue-quasistatic.md", "w") as f:
-        f.write(md)
-    print(table(rows, v))
+        f.write(text(rows, info))
+    print(table(rows))
 
 
 if __name__ == "__main__":
