@@ -10,7 +10,7 @@ ringing of the wall nodes against the plates, shorter than the features of the c
 * balance(): the two plates carry the same load. The bottom plate's force less the top one's is
   the rate of change of the momentum of everything between them (docs/Howto_plates.rst), zero in
   equilibrium. Per window: mean F_top, mean F_bottom and (F_top - F_bottom) / their mean.
-* energy(): the kinetic energy of all atoms against the work the moving plate has done. A
+* energy(): the kinetic energy of all atoms against the work the plates have done. A
   quasi-static plate's work is stored in the wall and the fluid or dissipated; KE / W is the share
   that went into motion. Per window: mean KE / mean W.
 * rate_difference(): the curve does not move when the plate speed halves. Per window: the plate
@@ -32,7 +32,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 # the columns the inputs append for this check (in.compress, in.tissue-compress): compute ke of all
-# atoms, and the moving plate's work, the running sum of F_top v dt over the steps
+# atoms, and the plates' work, the running sum of each plate's force times its speed times dt
+# over the steps (lammps-inputs/plates.lmp)
 KE, WORK = "kinetic_energy_nNum", "plate_work_nNum"
 # in.compress's record after its step column (in.tissue-compress's: tissuedata.COMPRESS)
 CELL_COMPRESS = ["time_us", "strain", "F_top_nN", "F_bottom_nN", "F_equator_nN", "P_mean_kPa",
