@@ -66,7 +66,10 @@ for v in $SPEEDS; do for pi in $PIS; do for lam in strong weak; do
   bg "compress$pi-$lam-$v" comp "$pi" "$lam" "$v"
 done; done; done
 wait
-{ echo "STRAIN=$STRAIN, last runs SPEEDS='$SPEEDS' PIS='$PIS' on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')"; } >> run-info.txt
+# what ran, appended for each call that compressed (the report prints it)
+if [ -z "${ONLY:-}" ] || [[ "$ONLY" == *compress* ]]; then
+  echo "STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
+fi
 if want report; then
   mkdir -p "$report"
   (cd "$here/tools" && $py -m cellmech.tissue.converged "$out" "$report")
