@@ -25,6 +25,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from .. import quasistatic as Q  # noqa: E402
+from .report import fmt  # noqa: E402
 from .tissuedata import COMPRESS, failure, load  # noqa: E402
 
 PIS = (-100, -364, -600)
@@ -50,10 +51,6 @@ REFERENCES = """* Lin, T.-T. and Pitt, R. E. (1986). Rheology of apple and potat
   quantitative analysis. *Postharvest Biology and Technology* 44, 240-247.
 * Scanlon, M. G., Pang, C. H. and Biliaderis, C. G. (1996). The effect of osmotic adjustment on the
   mechanical properties of potato parenchyma. *Food Research International* 29, 481-488."""
-
-
-def fmt(x, nd=3):
-    return "-" if x is None or not np.isfinite(x) else f"{x:.{nd}g}"
 
 
 def modulus(d, lo, hi):
