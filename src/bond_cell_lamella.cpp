@@ -176,7 +176,7 @@ void BondCellLamella::compute(int eflag, int vflag)
 void BondCellLamella::check_stiffness()
 {
   const double *alam = atom->dvector[ialam];
-  const double dt = update->dt;
+  const double dt = CellMech::bond_step(lmp);
   int **bondlist = neighbor->bondlist;
   struct {
     double w;

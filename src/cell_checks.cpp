@@ -17,6 +17,7 @@
 #include "modify.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "respa.h"
 #include "update.h"
 
 #include <cmath>
@@ -185,6 +186,13 @@ std::string blow_up_advice(LAMMPS *lmp, const StepMotion &m)
       "The likely cause is a time step too large for the stiffest part of the model (the "
       "fluid's acoustic limit 0.25 s/c, the tethers' period; the example inputs use 0.001 us), "
       "or particles that overlapped at the start; reduce the time step";
+}
+
+double bond_step(LAMMPS *lmp)
+{
+  auto *respa = dynamic_cast<Respa *>(lmp->update->integrate);
+  if (!respa || !utils::strmatch(lmp->update->integrate_style, "^respa")) return lmp->update->dt;
+  return respa->step[respa->level_bond];
 }
 
 bool will_step(LAMMPS *lmp)

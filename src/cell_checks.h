@@ -59,6 +59,10 @@ void check_step_motion(LAMMPS_NS::LAMMPS *lmp, const std::string &style);
 // needs one (delete_bonds, write_data, ...), which may come before the input sets its time step.
 bool will_step(LAMMPS_NS::LAMMPS *lmp);
 
+// The time step the bond styles are integrated with: under run_style respa that of the bonds'
+// level (the wall's inner step, lammps-inputs/respa.lmp), not the outer update->dt.
+double bond_step(LAMMPS_NS::LAMMPS *lmp);
+
 // the mass of atom i: its per-atom rmass where the system has one, else its type's
 double atom_mass(const LAMMPS_NS::Atom *atom, int i);
 

@@ -60,17 +60,14 @@ def compress(d, tag, text=None, check=True, nprocs=1, **extra):
 
 
 def with_run_style(line, after=None):
-    """in.compress with `line` in place of its own run_style choice, or after the first line that
-    starts with `after`."""
+    """in.compress with `line` right after respa.lmp has chosen its run_style (overriding it), or
+    after the first line that starts with `after`."""
     src = open(T.INPUTS + "/in.compress").read()
-    key = 'if "${respa} > 1" then "run_style respa'
-    assert src.count(key) == 1, "in.compress no longer chooses its run_style in one line"
+    key = "include         ${dir}/respa.lmp"
+    assert src.count(key) == 1, "in.compress no longer chooses its run_style in respa.lmp"
     lines = src.splitlines()
-    k = next(i for i, l in enumerate(lines) if l.startswith(key))
-    lines[k] = line if after is None else ""
-    if after is not None:
-        k = next(i for i, l in enumerate(lines) if l.startswith(after))
-        lines.insert(k + 1, line)
+    k = next(i for i, l in enumerate(lines) if l.startswith(key if after is None else after))
+    lines.insert(k + 1, line)
     return "\n".join(lines) + "\n"
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
-# Tissue compression at converged plate speeds (issue 29): the coarse 2x2x2 block (cellgen.py
-# tissue --lattice sc --n 2 2 2 --level 3) inflated at three turgors (Pi -100, -364, -600 kPa) with
+# Tissue compression at converged plate speeds (issue 29): a coarse block (cellgen.py tissue
+# --lattice sc --n BLOCK --level 3; 2x2x2 by default) inflated at three turgors (Pi -100, -364, -600 kPa) with
 # a strong (sigl 300 kPa, Gl 1 J/m^2) and a weak (30 kPa, 0.1 J/m^2) middle lamella (each block is
 # inflated with the lamella it is compressed with: the inflated equilibrium depends on it), then
 # compressed to failure (lamf 1.04) with in.tissue-compress's quasi-static protocol at two speeds,
@@ -10,8 +10,13 @@
 # of each run and the curve of V against V/2, side by side with parenchyma measurements.
 #   bash tools/tissue-converged.sh                 # results/tissue-converged (~20 min on 2 cores)
 #   REPORT=docs bash tools/tissue-converged.sh     # the committed report: docs/tissue-quasistatic.md
-# Environment: OUT (run folder), V (fast speed, m/s, default 0.5), STRAIN (0.2), JOBS (runs at a
-# time, 2), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
+#   BLOCK="3 3 3" STRAIN=0.15 RESPA=5 NAME=tissue-quasistatic-27 REPORT=docs bash tools/tissue-converged.sh
+#                                                  # the 27-cell block (~75 min on 2 cores; respa 5
+#                                                  # past rupture: docs/Howto_plates.rst)
+# Environment: OUT (run folder), BLOCK (cells along x y z, "2 2 2"), V (fast speed, m/s, default
+# 0.5), STRAIN (0.2), RESPA (inner wall steps per fluid step, in.tissue-compress -var respa; 1),
+# NP (MPI ranks per run, 1), JOBS (runs at a time, 2), NAME (the report's file name,
+# tissue-quasistatic), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
 # PIS (turgors, default "-100 -364 -600"), SPEEDS (default "V/2 V"). A condition that has not
 # converged gets the next rung into the same folder, e.g.
 #   OUT=... PIS=-100 SPEEDS=0.125 ONLY="compress-100-strong-0.125 compress-100-weak-0.125 report"
@@ -23,7 +28,11 @@ source "$here/build/cellmech-env.sh"
 source "$here/tools/common.sh"
 V=${V:-0.5}
 STRAIN=${STRAIN:-0.2}
+BLOCK=${BLOCK:-"2 2 2"}
+RESPA=${RESPA:-1}
+NP=${NP:-1}
 JOBS=${JOBS:-2}
+NAME=${NAME:-tissue-quasistatic}
 out=$(realpath -m "${OUT:-$here/results/tissue-converged}")
 report=${REPORT:-$out}
 [ "$report" = docs ] && report=$here/docs
@@ -46,9 +55,10 @@ bg() { while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done; st
 declare -A SIGL=([strong]=300 [weak]=30) GL=([strong]=1000 [weak]=100)
 PIS=${PIS:-"-100 -364 -600"}
 read -r NF < <(level_params 3 nfluid)
-gen() { $py "$here/tools/cellgen.py" tissue -o block.data --lattice sc --n 2 2 2 --level 3 --nfluid "$NF" \
+gen() { $py "$here/tools/cellgen.py" tissue -o block.data --lattice sc --n $BLOCK --level 3 --nfluid "$NF" \
           --stats block.json > block.txt; }
 stage gen gen
+lmp() { mpi_run "$NP" "$LMP" "$@"; }
 infl() {  # PI LAM
   lmp -in "$INPUTS/in.tissue-inflate" -screen none -var dir "$INPUTS" -var data "$out/gen/block.data" \
     -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" -var every 1000 -var restart_out block.restart
@@ -58,7 +68,8 @@ wait
 comp() {  # PI LAM SPEED
   lmp -in "$INPUTS/in.tissue-compress" -screen none -var dir "$INPUTS" \
     -var restart "$out/inflate$1-$2/block.restart" -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" \
-    -var lamf 1.04 -var vplate "$3" -var strain "$STRAIN" -var every 200 -var tabevery 4000 -var leakevery 0
+    -var lamf 1.04 -var vplate "$3" -var strain "$STRAIN" -var respa "$RESPA" -var every 200 -var tabevery 4000 \
+    -var leakevery 0
 }
 half=$($py -c "print($V / 2)")
 SPEEDS=${SPEEDS:-"$half $V"}
@@ -68,9 +79,9 @@ done; done; done
 wait
 # what ran, appended for each call that compressed (the report prints it)
 if [ -z "${ONLY:-}" ] || [[ "$ONLY" == *compress* ]]; then
-  echo "STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
+  echo "BLOCK='$BLOCK' STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
 fi
 if want report; then
   mkdir -p "$report"
-  (cd "$here/tools" && $py -m cellmech.tissue.converged "$out" "$report")
+  (cd "$here/tools" && $py -m cellmech.tissue.converged "$out" "$report" "$NAME")
 fi

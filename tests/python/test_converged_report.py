@@ -47,3 +47,29 @@ def test_each_condition_is_judged_on_its_two_slowest_rungs(tmp_path):
         np.savetxt(d / "tissue-compress.dat", rows)
     found = C.load_runs(str(tmp_path))
     assert list(found) == [(-364, "strong")] and found[-364, "strong"][0] == 0.25
+
+
+def test_the_block_is_described_from_its_generator_statistics():
+    cell = {"fluid": 440}
+    gen = {"cells": 27, "seeds": "lattice sc 3x3x3, constant 48.36", "wall_nodes_per_cell": 642,
+           "volume_mean": 48.0 ** 3, "faces_mean": 6.0, "neighbours_mean": 4.0, "cell": [cell] * 27}
+    words = C.block_words(gen)
+    assert "3x3x3 block of 27 cells" in words and "about 440 fluid" in words and "about 48 um" in words
+    assert C.surface(gen).startswith("26 of its 27 cells")      # one inner cell
+    assert C.surface(dict(gen, cells=8)).startswith("every cell")
+    assert C.surface(dict(gen, cells=125)).startswith("98 of its 125")
+
+
+def test_a_run_stopped_by_an_error_is_named_with_where_it_stopped(tmp_path):
+    e = np.linspace(0.0, 0.1, 21)
+    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
+    for speed in (0.5, 0.25):
+        d = tmp_path / f"compress-100-weak-{speed:g}"
+        d.mkdir()
+        np.savetxt(d / "tissue-compress.dat", rows[: 11 if speed == 0.25 else 21])
+        (d / "log.lammps").write_text("run 1000\nERROR on proc 0: Bond style cell/tether: atom 7 moved\n"
+                                      if speed == 0.25 else "run 1000\nTotal wall time: 0:01:00\n")
+    v, slow, fast, notes = C.load_runs(str(tmp_path))[-100, "weak"]
+    assert v == 0.25 and len(notes) == 1
+    assert notes[0].startswith("the run at 0.25 m/s stopped at 5.0% strain: ERROR on proc 0: Bond style")
+    assert "Stopped early" in C.stopped_text({(-100, "weak"): {"notes": notes}})

@@ -2,11 +2,12 @@
 """The report of tools/tissue-converged.sh (issue 29): tissue compression at converged plate speeds,
 side by side with parenchyma measurements.
 
-  python3 -m cellmech.tissue.converged RUNS REPORT
+  python3 -m cellmech.tissue.converged RUNS REPORT [NAME]
 
-RUNS holds compress{PI}-{LAM}-{SPEED}/tissue-compress.dat and the run settings (run-info.txt);
+RUNS holds the generated block's statistics (gen/block.json), compress{PI}-{LAM}-{SPEED}/
+tissue-compress.dat and the run settings (run-info.txt);
 each condition is judged on the two slowest speeds it has that differ by a factor of 2 (the
-ladder's last rungs: v against 2v). REPORT gets tissue-quasistatic.md and tissue-quasistatic.png.
+ladder's last rungs: v against 2v). REPORT gets NAME.md and NAME.png (NAME: tissue-quasistatic).
 Per condition: the
 quasi-static check (cellmech.quasistatic) of the slow run from 2% strain to its first wall rupture,
 the slow curve against the fast one over the same range (rate evidence), the modulus (slope of a
@@ -26,7 +27,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from .. import quasistatic as Q  # noqa: E402
 from .report import fmt  # noqa: E402
-from .tissuedata import COMPRESS, failure, load  # noqa: E402
+from .tissuedata import COMPRESS, failure, gen_stats, load  # noqa: E402
 
 PIS = (-100, -364, -600)
 LAMELLAE = {"strong": (300.0, 1.0), "weak": (30.0, 0.1)}       # sigl kPa, Gc J/m^2
@@ -98,9 +99,20 @@ def measure(slow, fast):
                 + ("" if worst <= Q.TOL_RATE else "; curve moves with the speed"))
 
 
+def stopped(folder):
+    """The error that stopped a run early (its log's first ERROR line, cut short), or None: a run
+    that blew up past its first rupture keeps its record up to there, and the report says so."""
+    try:
+        with open(f"{folder}/log.lammps") as f:
+            err = next((line.strip() for line in f if line.startswith("ERROR")), None)
+    except OSError:
+        return None
+    return err[:90] + "..." if err and len(err) > 90 else err
+
+
 def load_runs(runs):
-    """{(pi, lam): (v, slow record, fast record)} for the two slowest speeds v and 2v of each
-    condition found in RUNS."""
+    """{(pi, lam): (v, slow record, fast record, notes)} for the two slowest speeds v and 2v of each
+    condition found in RUNS; notes: the runs an error stopped early, where and why."""
     out = {}
     for pi in PIS:
         for lam in LAMELLAE:
@@ -110,7 +122,10 @@ def load_runs(runs):
             pairs = [(a, b) for a in speeds for b in speeds if abs(b - 2 * a) < 1e-9]
             if pairs:
                 a, b = pairs[0]
-                out[pi, lam] = (a,) + tuple(load(f"{runs}/{tag}{s:g}/tissue-compress.dat", COMPRESS) for s in (a, b))
+                recs = [load(f"{runs}/{tag}{s:g}/tissue-compress.dat", COMPRESS) for s in (a, b)]
+                notes = [f"the run at {s:g} m/s stopped at {rec['strain'].max():.1%} strain: {err}"
+                         for s, rec in zip((a, b), recs) if (err := stopped(f"{runs}/{tag}{s:g}"))]
+                out[pi, lam] = (a, *recs, notes)
     return out
 
 
@@ -120,7 +135,7 @@ def figure(data, path):
         for n, pi in enumerate(PIS):
             if (pi, lam) not in data:
                 continue
-            v, slow, fast = data[pi, lam]
+            v, slow, fast, _ = data[pi, lam]
             c = f"C{n}"
             ax.plot(slow["strain"], slow["stress_kPa"], color=c, lw=1.2, label=f"Pi {pi} kPa, {v:g} m/s")
             ax.plot(fast["strain"], fast["stress_kPa"], color=c, lw=0.8, ls="--", label=f"Pi {pi} kPa, {2 * v:g} m/s")
@@ -147,10 +162,18 @@ def table(rows):
         lines.append(
             f"| {pi} | {lam} | {m['v']:g} | {m['P0']:.0f} | {fmt(m['E'])} | {fmt(f['peak_kPa'])} | "
             f"{pct(f['strain_at_peak'])} | {pct(f['first'].get('wall rupture'))}; "
-            f"{pct(ff['first'].get('wall rupture'))} | {pct(f['first'].get('lamella debonding'))} | {f['mode']} | "
+            f"{pct(ff['first'].get('wall rupture'))} | {pct(f['first'].get('lamella debonding'))} | {f['mode']}"
+            f"{' (stopped early, below)' if m.get('notes') else ''} | "
             f"{m['judged'][0]:.0%}-{m['judged'][1]:.1%} | {pct(m['balance'])} | {pct(m['ke'])} | {pct(m['rate'])} | "
             f"{'-' if m['start'] is None else format(m['start'], '.0%')} |")
     return "\n".join(lines)
+
+
+def stopped_text(rows):
+    """The runs an error stopped before their final strain, as a list under the table."""
+    notes = [f"* Pi {pi}, {lam} lamella: {n}" for (pi, lam), m in rows.items() for n in m.get("notes", [])]
+    return ("\nStopped early (their records end there; the checks and numbers above use what they hold):\n\n"
+            + "\n".join(notes) + "\n") if notes else ""
 
 
 def compare(rows):
@@ -183,7 +206,17 @@ def mode_trend(rows):
     return "Model: " + "; ".join(f"Pi {pi} {lam}: {m['fail']['mode']}" for (pi, lam), m in rows.items()) + "."
 
 
-def text(rows, info):
+def block_words(gen):
+    """The block as the generator made it (gen/block.json), read from the run."""
+    n = gen["cells"]
+    shape = gen["seeds"].split(",")[0].replace("lattice sc ", "")
+    fluid = np.mean([c["fluid"] for c in gen["cell"]])
+    return (f"The coarse {shape} block of {n} cells ({gen['wall_nodes_per_cell']} wall nodes and about "
+            f"{fluid:.0f} fluid particles per cell, cells of about {gen['volume_mean'] ** (1 / 3):.0f} um, "
+            f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average)")
+
+
+def text(rows, info, gen, name):
     conv = [m for m in rows.values() if m["converged"]]
     fconv = [m for m in rows.values() if m["failure_converged"]]
     Es = [m["E"] for m in conv]
@@ -198,18 +231,17 @@ def text(rows, info):
 
 *Generated by `tools/tissue-converged.sh` ({info}); do not edit by hand.*
 
-**Summary.** The coarse 2x2x2 block (642 wall nodes and 440 fluid particles per cell, cells of
-48 um, glued by the middle lamella) inflated at three turgors with a strong and a weak lamella, then
+**Summary.** {block_words(gen)}, glued by the middle lamella, inflated at three turgors with a strong and a weak lamella, then
 compressed to failure (walls rupture at the paper's critical stretch 1.04) with the quasi-static
 protocol of `in.tissue-compress` (docs/Howto_plates.rst, "A protocol that reaches quasi-static"): at
 rest first, both plates closing after a smooth start, at the speed v of its row and, as the rate
 evidence, at 2v (the ladder's last two rungs). {summary} Every number is from the run at v; a
 condition that has not converged is a rate study, and its row says so.
 
-![stress-strain](tissue-quasistatic.png)
+![stress-strain]({name}.png)
 
 {table(rows)}
-
+{stopped_text(rows)}
 *Modulus*: slope of a straight line through the stress over {MODULUS_WINDOW[0]:.0%}-{MODULUS_WINDOW[1]:.0%}
 strain. *Failure stress*: the peak of the stress over 1% strain windows, with its strain. *First
 rupture*: at both speeds; where they differ, the failure strain has not converged with the speed
@@ -233,8 +265,8 @@ What the model gives, and why it differs:
 
 * **Modulus and failure stress.** {compare(rows)} The wall is the paper's stiff single cell's
   (Table I: G = 800 MPa, thickness 0.126 um, G t0 = 100 N/m) on cells of 48 um, not a wall fitted to
-  apple or potato; eight cells with free faces all round are not a bulk tissue (every cell is a
-  surface cell, free to bulge sideways); and the coarse wall (642 nodes) and fluid (440 particles)
+  apple or potato; a block of {gen['cells']} cells with free faces all round is not a bulk tissue
+  ({surface(gen)}); and the coarse wall ({gen['wall_nodes_per_cell']} nodes) and fluid (about {np.mean([c['fluid'] for c in gen['cell']]):.0f} particles)
   bound the curve's resolution. These are the model's numbers at this resolution: nothing was tuned
   towards the measurements.
 * **Turgor.** Measured moduli rise with turgor. {turgor_trend(rows)}
@@ -243,9 +275,11 @@ What the model gives, and why it differs:
 * **Bruise volume per impact energy** is not here: the impacts are dynamic by nature and stay in
   docs/tissue.md (in.tissue-impact), labelled as such.
 
-What this report does not yet hold (issue 29, item 4): the 27-cell block and a random Laguerre block
-at converged rates, and the tension matrix (in.tissue-tension converges only at 0.0625 m/s over the
-rise to the peak for the 2x2x2 block with the weak lamella: docs/Howto_tissue.rst "Tension").
+The same report for the 2x2x2 block is docs/tissue-quasistatic.md, for the 27-cell block
+docs/tissue-quasistatic-27.md (`tools/tissue-converged.sh` says how each is made). Not yet held
+(issue 29, item 4): a random Laguerre block at converged rates, and the tension matrix
+(in.tissue-tension converges only at 0.0625 m/s over the rise to the peak for the 2x2x2 block with
+the weak lamella: docs/Howto_tissue.rst "Tension").
 
 ## References
 
@@ -253,19 +287,30 @@ rise to the peak for the 2x2x2 block with the weak lamella: docs/Howto_tissue.rs
 """
 
 
+def surface(gen):
+    """How much of the block is surface: a cubic block of n^3 cells has (n - 2)^3 inner ones."""
+    n = round(gen["cells"] ** (1 / 3))
+    inner = max(n - 2, 0) ** 3
+    return ("every cell is a surface cell, free to bulge sideways" if inner == 0 else
+            f"{gen['cells'] - inner} of its {gen['cells']} cells lie on its surface, free to bulge sideways")
+
+
 def main(argv=None):
-    runs, report = (argv or sys.argv[1:])[:2]
+    args = argv or sys.argv[1:]
+    runs, report = args[:2]
+    name = args[2] if len(args) > 2 else "tissue-quasistatic"
     data = load_runs(runs)
     if not data:
         raise SystemExit(f"converged: no condition with runs at v and 2v in {runs}")
     rows = {}
-    for key, (v, slow, fast) in data.items():
-        rows[key] = dict(measure(slow, fast), v=v)
+    for key, (v, slow, fast, notes) in data.items():
+        rows[key] = dict(measure(slow, fast), v=v, notes=notes)
     info = "; ".join(open(f"{runs}/run-info.txt").read().split("\n")).strip("; ") \
         if os.path.exists(f"{runs}/run-info.txt") else runs
-    figure(data, f"{report}/tissue-quasistatic.png")
-    with open(f"{report}/tissue-quasistatic.md", "w") as f:
-        f.write(text(rows, info))
+    gen = gen_stats(f"{runs}/gen/block.json")
+    figure(data, f"{report}/{name}.png")
+    with open(f"{report}/{name}.md", "w") as f:
+        f.write(text(rows, info, gen, name))
     print(table(rows))
 
 
