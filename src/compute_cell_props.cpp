@@ -293,7 +293,7 @@ void ComputeCellProps::add_bonds(const std::vector<double> &c, std::vector<doubl
     const double s1 = p1[0] * normal[0] + p1[1] * normal[1] + p1[2] * normal[2];
     const double s2 = p2[0] * normal[0] + p2[1] * normal[1] + p2[2] * normal[2];
     if (crosses_equator(s1, s2)) {
-      double fforce;
+      double fforce = 0.0;    // bond style zero (a membrane wall's tethers) leaves it unset
       force->bond->single(type, rsq, i1, i2, fforce);
       const double dn = del[0] * normal[0] + del[1] * normal[1] + del[2] * normal[2];
       sums[m].feq += equatorial_force_term(fforce, dn, s1, s2);
