@@ -66,8 +66,8 @@ using CellMech::WaterSettings;
 
 namespace {
 constexpr int NCOLS = 7;    // compute_array columns
-// restart tag of the format (tag, ncells, then ID, uptake, W0 per cell): not an integer, so it
-// cannot be mistaken for the cell count that opens the two earlier formats
+// restart tag of the format (tag, ncells, then ID, uptake, W0 per cell): not an integer, so that
+// the records of development versions, which opened with a cell count, are told apart and refused
 constexpr double RESTART_TAG = -0.5;
 }    // namespace
 
@@ -568,9 +568,7 @@ double FixCellFluid::compute_array(int row, int col)
 
 /* ----------------------------------------------------------------------
    restart: RESTART_TAG, ncells, then (molecule ID, uptake, W0) of each
-   cell. Files of the earlier formats (-ncells, then (molecule ID, uptake);
-   ncells, then the uptake of molecules 1..ncells) still read, their W0
-   taken at the next run's start.
+   cell
 ------------------------------------------------------------------------- */
 
 void FixCellFluid::write_restart(FILE *fp)
@@ -594,19 +592,18 @@ void FixCellFluid::write_restart(FILE *fp)
 void FixCellFluid::restart(char *buf)
 {
   auto list = (double *) buf;
+  // no release wrote another format: those of development versions are not read
+  if (list[0] != RESTART_TAG)
+    error->all(FLERR,
+               "Fix cell/fluid {}: the restart file holds this fix's uptake totals in an older "
+               "format that is no longer read; continue from a restart file written by this "
+               "version, or define the fix with another ID to start the totals from zero",
+               id);
   flux_restart.clear();
   water0_restart.clear();
-  if (list[0] == RESTART_TAG) {
-    const int n = (int) list[1];
-    for (int m = 1; m <= n; m++) {
-      flux_restart[(tagint) list[3 * m - 1]] += list[3 * m];
-      water0_restart[(tagint) list[3 * m - 1]] = list[3 * m + 1];
-    }
-  } else if (list[0] < 0) {
-    const int n = (int) -list[0];
-    for (int m = 1; m <= n; m++) flux_restart[(tagint) list[2 * m - 1]] += list[2 * m];
-  } else {
-    const int n = (int) list[0];
-    for (int m = 1; m <= n; m++) flux_restart[m] += list[m];
+  const int n = (int) list[1];
+  for (int m = 1; m <= n; m++) {
+    flux_restart[(tagint) list[3 * m - 1]] += list[3 * m];
+    water0_restart[(tagint) list[3 * m - 1]] = list[3 * m + 1];
   }
 }
