@@ -26,8 +26,14 @@ struct GluedPair;
 
 class CellWater {
  public:
-  CellWater(const WaterSettings &settings, const CellSums &sums) : settings(settings), sums(sums) {}
-  // zeroed values for the slots 0..ncells, W0 excepted (the caller carries it over)
+  // water0: W0 of Eq. W1 per slot (cell_uptake.h)
+  CellWater(const WaterSettings &settings, const CellSums &sums,
+            const std::vector<double> &water0) :
+      settings(settings),
+      sums(sums), water0(water0)
+  {
+  }
+  // zeroed values for the slots 0..ncells
   void resize(int ncells);
   // this step's values of every cell, the same on every rank
   void update(const CellIndex &, const std::vector<GluedPair> &pairs);
@@ -38,13 +44,14 @@ class CellWater {
   double outside_mass_step(int m, const LAMMPS_NS::PairCellSPH *, int type, double rho, double mass,
                            double dt) const;
 
-  // per cell (slots), the same on every rank: Pi0 and Lp of the cell, the water W0 when the fix
-  // started (Eq. W1), and this step's osmotic and water potentials, exposed and glued area
-  std::vector<double> pi0, lp, water0, pinow, psi, exposed, glued;
+  // per cell (slots), the same on every rank: Pi0 and Lp of the cell, and this step's osmotic
+  // and water potentials, exposed and glued area
+  std::vector<double> pi0, lp, pinow, psi, exposed, glued;
 
  private:
   const WaterSettings &settings;
   const CellSums &sums;
+  const std::vector<double> &water0;
 };
 
 }    // namespace CellMech

@@ -62,13 +62,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 using namespace CellPhysics;
-using CellMech::WaterSettings;
 
 namespace {
 constexpr int NCOLS = 7;    // compute_array columns
-// restart tag of the format (tag, ncells, then ID, uptake, W0 per cell): not an integer, so that
-// the records of development versions, which opened with a cell count, are told apart and refused
-constexpr double RESTART_TAG = -0.5;
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -78,8 +74,8 @@ constexpr double RESTART_TAG = -0.5;
 ------------------------------------------------------------------------- */
 
 FixCellFluid::FixCellFluid(LAMMPS *_lmp, int narg, char **arg) :
-    Fix(_lmp, narg, arg), settings(_lmp), water(settings, sums), ncells(0), dt(0.0),
-    ilevel_respa(0), sph(nullptr), iref(-1), ialam(-1), flux_stale(1)
+    Fix(_lmp, narg, arg), settings(_lmp), water(settings, sums, books.water0), ncells(0), dt(0.0),
+    ilevel_respa(0), sph(nullptr), iref(-1), ialam(-1)
 {
   parse_command(narg, arg);
   if (!atom->molecule_flag)
@@ -269,40 +265,20 @@ void FixCellFluid::check_group()
 }
 
 /* ----------------------------------------------------------------------
-   the cells present and their slots; each rank's uptake totals follow their cells' molecule IDs
-   when the slots change (a cell appears or disappears) and take up a restart file's totals
+   the cells present and their slots; the books follow the cells' molecule IDs when the slots
+   change (a cell appears or disappears) and take up a restart file's record
 ------------------------------------------------------------------------- */
 
 void FixCellFluid::index_cells()
 {
   const std::vector<tagint> old = cells.molecule_ids();
   cells.build(lmp);
-  if (cells.molecule_ids() == old && flux_restart.empty() && water0_restart.empty() &&
-      !flux_local.empty())
-    return;
-  const int n = cells.size();
-  std::vector<double> flux(n + 1, 0.0), w0(n + 1, 0.0);
-  for (int k = 1; k <= (int) old.size(); k++) {
-    flux[cells.slot(old[k - 1])] += flux_local[k];
-    w0[cells.slot(old[k - 1])] = water.water0[k];
-  }
-  // the restart's totals were kept on rank 0 only, so they are summed once
-  if (comm->me == 0)
-    for (const auto &kv : flux_restart) flux[cells.slot(kv.first)] += kv.second;
-  for (const auto &kv : water0_restart) w0[cells.slot(kv.first)] = kv.second;
-  flux_restart.clear();
-  water0_restart.clear();
-  flux[0] = 0.0;    // slot 0: IDs that left
-  w0[0] = 0.0;
-  water.water0 = w0;
-  water.resize(n);
-  sums.clear(n);
-  ncells = n;
-  flux_local = flux;
-  flux_all.assign(n + 1, 0.0);
+  if (!books.reindex(old, cells, comm->me)) return;
+  ncells = cells.size();
+  water.resize(ncells);
+  sums.clear(ncells);
   size_vector = ncells;
   size_array_rows = ncells;
-  flux_stale = 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -313,68 +289,25 @@ void FixCellFluid::index_cells()
 void FixCellFluid::measure_cells()
 {
   sums.clear(ncells);
-  // a triangle's cell and rest area change only with the angle list and the cell index (a build
-  // or a setup): found then, not each step
-  if (CellMech::list_rebuilt(lmp, tri_build, tri_slot.size(), neighbor->nanglelist))
-    index_triangles();
-  add_triangles();
+  if (triangles.stale(lmp)) {
+    triangles.index(lmp, cells, iref >= 0 ? atom->darray[iref] : nullptr);
+    if (settings.exposed_outside()) find_open_triangles();
+  }
+  triangles.add_areas(lmp, iref >= 0, sums);
   sums.add_fluid(lmp, sph, cells, groupbit);
-  // the counts of the last failures found: the fix reads them, its caller keeps them in step
+  // a wall with a broken tether is open (advance_fluid)
   sums.add_broken_tethers(lmp, cells, modify->get_fix_by_id(FixCellTetherBreak::ID));
   sums.reduce(world);
 }
 
-// the cell of each triangle (that of its central node, contract: cell_fields.h), its rest area and
-// whether it faces the outside, found where the ghosts are fresh: at the build
-void FixCellFluid::index_triangles()
+// found where the ghosts are fresh, at the build: the nodes glued to another cell, counted at both
+// nodes of their bonds, are summed onto their owners, then sent to the ghosts
+void FixCellFluid::find_open_triangles()
 {
-  int **anglelist = neighbor->anglelist;
-  const int nangle = neighbor->nanglelist;
-  double **ref = iref >= 0 ? atom->darray[iref] : nullptr;
-  tri_slot.assign(nangle, 0);
-  tri_aref.assign(nangle, 0.0);
-  for (int n = 0; n < nangle; n++) {
-    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
-    tri_slot[n] = cells.slot(atom->molecule[b]);
-    if (!ref) continue;
-    double u[3], w[3];
-    for (int d = 0; d < 3; d++) {
-      u[d] = ref[b][d] - ref[a][d];
-      w[d] = ref[c][d] - ref[a][d];
-    }
-    tri_aref[n] = triangle_area(u, w);
-  }
-  tri_open.assign(nangle, 1);
-  if (!settings.exposed_outside()) return;
-  // the nodes glued to another cell, counted at both nodes of their bonds, summed onto their
-  // owners, then sent to the ghosts
   CellMech::count_glued_nodes(lmp, node_glued);
   comm->reverse_comm(this);
   comm->forward_comm(this);
-  CellMech::find_open_triangles(lmp, sph, settings.expose_depth, node_glued, tri_slot, tri_open);
-}
-
-void FixCellFluid::add_triangles()
-{
-  double **x = atom->x;
-  int **anglelist = neighbor->anglelist;
-  const bool rest = iref >= 0;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;    // triangle of a broken wall
-    const int m = tri_slot[n];
-    if (m < 1) continue;
-    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
-    double u[3], w[3];
-    for (int d = 0; d < 3; d++) {
-      u[d] = x[b][d] - x[a][d];
-      w[d] = x[c][d] - x[a][d];
-    }
-    const double A = triangle_area(u, w);
-    CellMech::CellSum &s = sums[m];
-    s.area += A;
-    if (rest) s.rest_area += tri_aref[n];
-    if (tri_open[n]) s.open_area += A;
-  }
+  triangles.find_open(lmp, sph, settings.expose_depth, node_glued);
 }
 
 // this step's glued pairs (exchange yes) and every cell's potentials
@@ -397,7 +330,7 @@ void FixCellFluid::setup_pre_force(int /*vflag*/)
   update_potentials();
   // W0 of Eq. W1: the water of each cell when the fix first ran (or from the restart file)
   for (int m = 1; m <= ncells; m++)
-    if (water.water0[m] == 0.0) water.water0[m] = sums[m].mass;
+    if (books.water0[m] == 0.0) books.water0[m] = sums[m].mass;
   update_potentials();
   check_cell_settings();
   check_walls();
@@ -473,8 +406,7 @@ void FixCellFluid::advance_fluid(bool osmosis, const std::vector<double> &uptake
                    "({} + {}) this step: the cell has dried out (external flux or potential too "
                    "strong for its water)",
                    id, atom->tag[i], molecule[i], rmass[i], dm);
-      flux_local[m] += dm;
-      flux_stale = 1;
+      books.add(m, dm);
     }
     rho[i] += density_increment(rho[i], rmass[i], drho[i], dt, dm);
     rmass[i] += dm;
@@ -529,11 +461,7 @@ void FixCellFluid::unpack_forward_comm(int n, int first, double *buf)
 
 double FixCellFluid::compute_vector(int m)
 {
-  if (flux_stale) {
-    MPI_Allreduce(flux_local.data(), flux_all.data(), ncells + 1, MPI_DOUBLE, MPI_SUM, world);
-    flux_stale = 0;
-  }
-  return flux_all[m + 1];
+  return books.total(m + 1, world);
 }
 
 /* ----------------------------------------------------------------------
@@ -561,49 +489,27 @@ double FixCellFluid::compute_array(int row, int col)
     case 5:
       return sums[m].area - water.exposed[m];
     case 6:
-      return water.water0[m];
+      return books.water0[m];
   }
   return 0.0;
 }
 
 /* ----------------------------------------------------------------------
-   restart: RESTART_TAG, ncells, then (molecule ID, uptake, W0) of each
-   cell
+   restart: the books (cell_uptake.h)
 ------------------------------------------------------------------------- */
 
 void FixCellFluid::write_restart(FILE *fp)
 {
-  std::vector<double> sum(ncells + 1), list(2 + 3 * ncells);
-  MPI_Allreduce(flux_local.data(), sum.data(), ncells + 1, MPI_DOUBLE, MPI_SUM, world);
-  list[0] = RESTART_TAG;
-  list[1] = ncells;
-  for (int m = 1; m <= ncells; m++) {
-    list[3 * m - 1] = (double) cells.id(m);
-    list[3 * m] = sum[m];
-    list[3 * m + 1] = water.water0[m];
-  }
-  if (comm->me == 0) {
-    int size = list.size() * sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list.data(), sizeof(double), list.size(), fp);
-  }
+  books.write(fp, cells, comm->me, world);
 }
 
 void FixCellFluid::restart(char *buf)
 {
-  auto list = (double *) buf;
   // no release wrote another format: those of development versions are not read
-  if (list[0] != RESTART_TAG)
+  if (!books.read((double *) buf))
     error->all(FLERR,
                "Fix cell/fluid {}: the restart file holds this fix's uptake totals in an older "
                "format that is no longer read; continue from a restart file written by this "
                "version, or define the fix with another ID to start the totals from zero",
                id);
-  flux_restart.clear();
-  water0_restart.clear();
-  const int n = (int) list[1];
-  for (int m = 1; m <= n; m++) {
-    flux_restart[(tagint) list[3 * m - 1]] += list[3 * m];
-    water0_restart[(tagint) list[3 * m - 1]] = list[3 * m + 1];
-  }
 }

@@ -10,8 +10,11 @@
      cell_sums.h            the sums per cell (shared with compute cell/props)
      cell_water.h           the potentials per cell (Eqs. W1-W2) and the
                             outside through the exposed wall (Eqs. 10, W4)
+     cell_wall_triangles.h  the wall triangles: cell, rest area, outside
      cell_exposed.h         the triangles that face the outside (W4)
      cell_exchange.h        water between glued cells (Eqs. W2-W3)
+     cell_uptake.h          each cell's uptake and W0, across runs and
+                            restart files
 
    Separate fixes (solutes, exchange, outside) registering with a
    coordinator, as LAMMPS's RHEO package does (fix rheo and its
@@ -42,11 +45,12 @@ FixStyle(cell/fluid,FixCellFluid);
 #include "cell_exchange.h"
 #include "cell_index.h"
 #include "cell_sums.h"
+#include "cell_uptake.h"
+#include "cell_wall_triangles.h"
 #include "cell_water.h"
 #include "cell_water_settings.h"
 #include "fix.h"
 
-#include <map>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -72,26 +76,17 @@ class FixCellFluid : public Fix {
 
  protected:
   CellMech::WaterSettings settings;
+  CellMech::UptakeBooks books;
   CellMech::CellIndex cells;    // slots 1..ncells
   CellMech::CellSums sums;      // this step's, per slot
   CellMech::CellWater water;    // this step's potentials, per slot
   CellMech::CellExchange exchange;
+  CellMech::WallTriangles triangles;
   int ncells;
   double dt;    // step of the level where the SPH forces are
   int ilevel_respa;
   class PairCellSPH *sph;
-  int iref, ialam;    // d2_cellref and d_alam
-  // per slot, mass added by osmosis since the fix was defined: this rank's and all ranks'
-  std::vector<double> flux_local, flux_all;
-  int flux_stale;
-  // by molecule ID, from a restart file, until the next index_cells()
-  std::map<tagint, double> flux_restart, water0_restart;
-  // per entry of neighbor->anglelist since the last build: the cell slot of the triangle and its
-  // rest area (measure_cells), and whether it faces the outside; the timestep of that build
-  bigint tri_build = -1;
-  std::vector<int> tri_slot;
-  std::vector<double> tri_aref;
-  std::vector<char> tri_open;
+  int iref, ialam;                   // d2_cellref and d_alam
   std::vector<double> node_glued;    // per local and ghost atom: its intact lamella bonds
 
   void parse_command(int, char **);
@@ -103,8 +98,7 @@ class FixCellFluid : public Fix {
   void check_cell_settings();
   void index_cells();
   void measure_cells();
-  void index_triangles();
-  void add_triangles();
+  void find_open_triangles();
   void update_potentials();
   void advance_fluid(bool osmosis, const std::vector<double> &uptake);
 };
