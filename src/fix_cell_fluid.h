@@ -17,20 +17,23 @@
                             restart files
 
    Separate fixes (solutes, exchange, outside) registering with a
-   coordinator, as LAMMPS's RHEO package does (fix rheo and its
-   rheo/pressure, rheo/viscosity, rheo/thermal): not recommended for now.
-   They would buy nothing users ask for -- the keywords already switch each
-   part on and off and fix_modify changes them between runs -- and would
-   cost what one fix gives for free: every part reads the same per-cell sums
-   and potentials of one step and adds to one mass step per particle, in a
-   fixed order (outside, then exchange), which conservation of mass to
-   round-off and the bit-identical results depend on; LAMMPS calls separate
-   fixes in the order of the input script. If a user need appears (another
-   external boundary, say, or a solute model to swap), the coordinator
-   should be this fix: it keeps the sums, the step and the restart, and a
-   part registers and adds its per-cell uptake through one call, as
-   CellExchange::add_uptake does now, so that the coordinator, not the
-   input script, fixes the order of the terms.
+   coordinator, as in LAMMPS's RHEO package (fix rheo/pressure,
+   rheo/viscosity and rheo/thermal find fix rheo in init, flag themselves
+   to it in setup_pre_force and then each runs its own pre_force, in the
+   order of the input script; fix rheo refuses to come after them): not
+   recommended now. They would buy nothing users ask for -- the keywords
+   already switch each part on and off, and fix_modify changes them
+   between runs -- and would cost what one fix gives for free: every part
+   reads the same per-cell sums and potentials of one step and adds to one
+   mass step per particle, outside then exchange, and conservation of mass
+   to round-off and the bit-identical results depend on that order. If a
+   need appears (another outside boundary, a solute model to swap), this
+   fix should stay the coordinator and call the registered parts itself,
+   each adding its per-cell uptake through one call as
+   CellExchange::add_uptake does now, rather than let each part run its
+   own pre_force as RHEO's do: then the coordinator, not the order of the
+   input script, fixes the order of the terms, and it keeps the sums, the
+   step and the restart record in one place.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
