@@ -12,6 +12,7 @@
 #include "cell_mpi.h"
 #include "cell_physics.h"
 #include "cell_sums.h"
+#include "cell_topology.h"
 #include "cell_water.h"
 #include "lammps.h"
 #include "neighbor.h"
@@ -31,7 +32,7 @@ void CellExchange::find_pairs(LAMMPS *lmp, const CellIndex &cells, const double 
   int **bondlist = lmp->neighbor->bondlist;
   for (int n = 0; n < lmp->neighbor->nbondlist; n++) {
     const int i1 = bondlist[n][0], i2 = bondlist[n][1];
-    if (bondlist[n][2] <= 0 || molecule[i1] == molecule[i2]) continue;    // debonded or a tether
+    if (bondlist[n][2] <= 0 || same_cell(molecule, i1, i2)) continue;    // debonded or a tether
     const int a = cells.slot(molecule[i1]), b = cells.slot(molecule[i2]);
     if (a < 1 || b < 1) continue;
     local[std::make_pair(MIN(a, b), MAX(a, b))] += lamella_area(alam, i1, i2);

@@ -7,6 +7,7 @@
 
 #include "atom.h"
 #include "cell_physics.h"
+#include "cell_topology.h"
 #include "lammps.h"
 #include "neighbor.h"
 #include "pair_cell_sph.h"
@@ -126,7 +127,7 @@ bool HiderSearch::hidden_in(int bin, int b, const TriangleFrame &t) const
   const double D2 = D * D;
   for (int q = bins.start[bin]; q < bins.start[bin + 1]; q++) {
     const int j = bins.sorted[q];
-    if (molecule[j] == molecule[b]) continue;
+    if (CellMech::same_cell(molecule, j, b)) continue;
     double r[3], dc[3];
     for (int d = 0; d < 3; d++) {
       r[d] = x[j][d] - x[b][d];
@@ -186,7 +187,7 @@ void count_glued_nodes(LAMMPS *lmp, std::vector<double> &node_glued)
   // each bond is in the list once, owned by either node's rank
   for (int k = 0; k < lmp->neighbor->nbondlist; k++) {
     const int i1 = bondlist[k][0], i2 = bondlist[k][1];
-    if (bondlist[k][2] <= 0 || molecule[i1] == molecule[i2]) continue;    // debonded or a tether
+    if (bondlist[k][2] <= 0 || same_cell(molecule, i1, i2)) continue;    // debonded or a tether
     node_glued[i1] += 1.0;
     node_glued[i2] += 1.0;
   }

@@ -71,16 +71,6 @@ class WallNodes {
   const double *nbroken, *ndebonded;
 };
 
-// Whether two particles belong to one cell (molecule ID), so that SPH may pair them: the wall
-// between two cells is closed, so no pressure, viscosity, density rate or shear of one cell's
-// protoplasm comes from another's, even where glued walls bring them within the kernel support.
-// Without molecule IDs all particles are one body of fluid. The rule of pair cell/sph and of
-// everything that sums over its pairs (compute cell/shear/atom).
-inline bool same_cell(const LAMMPS_NS::tagint *molecule, int i, int j)
-{
-  return !molecule || molecule[i] == molecule[j];
-}
-
 // Rest length of the bond i-j (tether or lamella): the distance of the nodes' reference positions.
 inline double rest_length(double *const *ref, int i, int j)
 {

@@ -38,6 +38,7 @@
 #include "bond.h"
 #include "cell_mpi.h"
 #include "cell_physics.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "compute_cell_props.h"
 #include "error.h"
@@ -187,7 +188,7 @@ void ComputeCellContacts::compute_array()
   int **bondlist = neighbor->bondlist;
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int i1 = bondlist[n][0], i2 = bondlist[n][1], btype = bondlist[n][2];
-    if (btype <= 0 || molecule[i1] == molecule[i2]) continue;
+    if (btype <= 0 || CellMech::same_cell(molecule, i1, i2)) continue;
     if (!(mask[i1] & groupbit) || !(mask[i2] & groupbit)) continue;
     Sums &s = row(molecule[i1], molecule[i2]);
     s[0] += 1.0;
@@ -213,7 +214,8 @@ void ComputeCellContacts::compute_array()
     // glued: the other cells among its 1-2 neighbours
     for (int k = 0; k < nspecial[i][0]; k++) {
       const int j = atom->map(special[i][k]);
-      if (j >= 0 && molecule[j] != molecule[i] && (mask[j] & groupbit)) touched.insert(molecule[j]);
+      if (j >= 0 && !CellMech::same_cell(molecule, i, j) && (mask[j] & groupbit))
+        touched.insert(molecule[j]);
     }
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -221,8 +223,8 @@ void ComputeCellContacts::compute_array()
       const double factor_lj = special_lj[sbmask(j)];
       j &= NEIGHMASK;
       const int jtype = type[j];
-      if (molecule[j] == molecule[i] || !(mask[j] & groupbit) || (sph && sph->is_fluid(jtype)) ||
-          nspecial[j][0] == 0)
+      if (CellMech::same_cell(molecule, i, j) || !(mask[j] & groupbit) ||
+          (sph && sph->is_fluid(jtype)) || nspecial[j][0] == 0)
         continue;
       const int lo = MIN(itype, jtype), hi = MAX(itype, jtype);
       if (!contact->setflag[lo][hi]) continue;

@@ -38,6 +38,7 @@
 #include "cell_mpi.h"
 #include "cell_physics.h"
 #include "cell_sums.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -271,7 +272,7 @@ void ComputeCellProps::add_bonds(const std::vector<double> &c, std::vector<doubl
     if (type <= 0) continue;
     const int m = cells.slot(molecule[i1]);
     if (m < 1) continue;
-    if (molecule[i2] != molecule[i1]) {
+    if (!CellMech::same_cell(molecule, i1, i2)) {
       // a middle-lamella bond glues this cell to another: both cells count it and its area
       const double area = alam ? CellMech::lamella_area(alam, i1, i2) : 0.0;
       for (const int mm : {m, cells.slot(molecule[i2])})
