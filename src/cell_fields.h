@@ -49,17 +49,17 @@ constexpr char DRHO_FIELD[] = "drho";      // d_drho: its continuity rate (Eq. 7
    broken is still part of its wall and the broken and debonded counts
    (fix cell_broken, cell_debonded) of every node are seen. Fluid never has
    bonds: pair cell/sph refuses a bonded atom of a fluid type. Valid for
-   local atoms (the per-atom counts of the fixes are).
+   local atoms (the per-atom counts of the fixes are). Collective: the
+   counts are read synced (FixCellFailure::synced_counts).
 ------------------------------------------------------------------------- */
 
 class WallNodes {
  public:
-  explicit WallNodes(LAMMPS_NS::LAMMPS *lmp) : nspecial(lmp->atom->nspecial)
+  explicit WallNodes(LAMMPS_NS::LAMMPS *lmp) :
+      nspecial(lmp->atom->nspecial),
+      nbroken(LAMMPS_NS::FixCellFailure::synced_counts(lmp, LAMMPS_NS::FixCellTetherBreak::ID)),
+      ndebonded(LAMMPS_NS::FixCellFailure::synced_counts(lmp, LAMMPS_NS::FixCellLamellaBreak::ID))
   {
-    auto *broken = lmp->modify->get_fix_by_id(LAMMPS_NS::FixCellTetherBreak::ID);
-    auto *debonded = lmp->modify->get_fix_by_id(LAMMPS_NS::FixCellLamellaBreak::ID);
-    nbroken = broken ? broken->vector_atom : nullptr;
-    ndebonded = debonded ? debonded->vector_atom : nullptr;
   }
   bool operator()(int i) const
   {

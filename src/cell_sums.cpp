@@ -8,7 +8,6 @@
 
 #include "atom.h"
 #include "cell_index.h"
-#include "fix.h"
 #include "pair_cell_sph.h"
 
 using namespace LAMMPS_NS;
@@ -35,13 +34,13 @@ void CellSums::add_fluid(LAMMPS *lmp, const PairCellSPH *sph, const CellIndex &c
   }
 }
 
-void CellSums::add_broken_tethers(LAMMPS *lmp, const CellIndex &cells, Fix *broken)
+void CellSums::add_broken_tethers(LAMMPS *lmp, const CellIndex &cells, const double *nbroken)
 {
-  if (!broken) return;
+  if (!nbroken) return;
   // each broken tether is counted at both of its nodes
   for (int i = 0; i < lmp->atom->nlocal; i++) {
     const int m = cells.slot(lmp->atom->molecule[i]);
-    if (m >= 1) sums[m].broken += 0.5 * broken->vector_atom[i];
+    if (m >= 1) sums[m].broken += 0.5 * nbroken[i];
   }
 }
 

@@ -16,7 +16,6 @@
 #include <vector>
 
 namespace LAMMPS_NS {
-class Fix;
 class LAMMPS;
 class PairCellSPH;
 }    // namespace LAMMPS_NS
@@ -60,8 +59,9 @@ class CellSums {
   // the fluid particles (types pair cell/sph treats as fluid) of the group among the local atoms
   void add_fluid(LAMMPS_NS::LAMMPS *, const LAMMPS_NS::PairCellSPH *, const CellIndex &,
                  int groupbit);
-  // broken tethers from the per-node counts of fix CELL_TETHER_BREAK (null: none broken)
-  void add_broken_tethers(LAMMPS_NS::LAMMPS *, const CellIndex &, LAMMPS_NS::Fix *broken);
+  // broken tethers from the per-node counts of fix CELL_TETHER_BREAK (FixCellFailure's
+  // synced_counts or built_counts; null: none broken)
+  void add_broken_tethers(LAMMPS_NS::LAMMPS *, const CellIndex &, const double *nbroken);
   // collective: every rank's sums, the same on every rank
   void reduce(MPI_Comm world);
 

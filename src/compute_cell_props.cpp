@@ -194,7 +194,7 @@ void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
   // the failures found so far reach every rank's topology and counts first
-  auto *broken = FixCellFailure::synced(lmp, FixCellTetherBreak::ID);
+  const double *nbroken = FixCellFailure::synced_counts(lmp, FixCellTetherBreak::ID);
   auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
 
   cells.build(lmp);
@@ -206,7 +206,7 @@ void ComputeCellProps::compute_array()
   sums.clear(ncells);
   std::vector<double> lmax(ncells + 1, 0.0);    // max tether stretch
   add_triangles(c);
-  sums.add_broken_tethers(lmp, cells, broken);
+  sums.add_broken_tethers(lmp, cells, nbroken);
   if (sph) sums.add_fluid(lmp, sph, cells, groupbit);
   add_bonds(c, lmax);
   sums.reduce(world);

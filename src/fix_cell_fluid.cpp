@@ -295,8 +295,9 @@ void FixCellFluid::measure_cells()
   }
   triangles.add_areas(lmp, iref >= 0, sums);
   sums.add_fluid(lmp, sph, cells, groupbit);
-  // a wall with a broken tether is open (advance_fluid)
-  sums.add_broken_tethers(lmp, cells, modify->get_fix_by_id(FixCellTetherBreak::ID));
+  // a wall with a broken tether is open (advance_fluid); called at the neighbor stage and after,
+  // where the counts of the last build are the present ones
+  sums.add_broken_tethers(lmp, cells, FixCellFailure::built_counts(lmp, FixCellTetherBreak::ID));
   sums.reduce(world);
 }
 

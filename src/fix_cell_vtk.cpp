@@ -108,8 +108,8 @@ void FixCellVTK::write()
   int *mask = atom->mask;
 
   // points: id, molecule, unwrapped position, displacement from the reference, broken tethers
-  auto *broken = FixCellFailure::synced(lmp, FixCellTetherBreak::ID);
-  auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
+  const double *nbroken = FixCellFailure::synced_counts(lmp, FixCellTetherBreak::ID);
+  const double *ndebonded = FixCellFailure::synced_counts(lmp, FixCellLamellaBreak::ID);
   const CellMech::WallNodes is_wall(lmp);
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -118,8 +118,8 @@ void FixCellVTK::write()
     domain->unmap(x[i], atom->image[i], xu);
     mine.insert(mine.end(),
                 {(double) tag[i], (double) molecule[i], xu[0], xu[1], xu[2], xu[0] - ref[i][0],
-                 xu[1] - ref[i][1], xu[2] - ref[i][2], broken ? broken->vector_atom[i] : 0.0,
-                 debonded ? debonded->vector_atom[i] : 0.0});
+                 xu[1] - ref[i][1], xu[2] - ref[i][2], nbroken ? nbroken[i] : 0.0,
+                 ndebonded ? ndebonded[i] : 0.0});
   }
   // triangles: three IDs, molecule, area strain, largest tether stretch (a broken tether has
   // taken its triangles out of the topology: the crack is a hole in the surface). Their order
