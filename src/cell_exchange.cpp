@@ -17,9 +17,6 @@
 #include "lammps.h"
 #include "neighbor.h"
 
-#include <map>
-#include <utility>
-
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
 
@@ -27,7 +24,7 @@ namespace CellMech {
 
 void CellExchange::find_pairs(LAMMPS *lmp, const CellIndex &cells, const double *alam)
 {
-  std::map<std::pair<int, int>, double> local;
+  PairSums<1> local;    // keyed by slots
   const tagint *molecule = lmp->atom->molecule;
   int **bondlist = lmp->neighbor->bondlist;
   for (int n = 0; n < lmp->neighbor->nbondlist; n++) {
@@ -35,22 +32,12 @@ void CellExchange::find_pairs(LAMMPS *lmp, const CellIndex &cells, const double 
     if (bondlist[n][2] <= 0 || same_cell(molecule, i1, i2)) continue;    // debonded or a tether
     const int a = cells.slot(molecule[i1]), b = cells.slot(molecule[i2]);
     if (a < 1 || b < 1) continue;
-    local[std::make_pair(MIN(a, b), MAX(a, b))] += lamella_area(alam, i1, i2);
+    local(a, b)[0] += lamella_area(alam, i1, i2);
   }
-  // each rank's pairs as (a, b, area) triples
-  std::vector<double> mine;
-  for (const auto &kv : local) {
-    mine.push_back(kv.first.first);
-    mine.push_back(kv.first.second);
-    mine.push_back(kv.second);
-  }
-  const std::vector<double> gathered = allgather_list(mine, MPI_DOUBLE, lmp->world);
-  // summed in rank order into an ordered map: the same sums on every rank
-  std::map<std::pair<int, int>, double> all;
-  for (size_t k = 0; k < gathered.size(); k += 3)
-    all[std::make_pair((int) gathered[k], (int) gathered[k + 1])] += gathered[k + 2];
+  const PairSums<1> all = local.summed(lmp->world);
   glued.clear();
-  for (const auto &kv : all) glued.push_back({kv.first.first, kv.first.second, kv.second});
+  for (const auto &kv : all.all())
+    glued.push_back({(int) kv.first.first, (int) kv.first.second, kv.second[0]});
 }
 
 void CellExchange::add_uptake(const CellSums &sums, const CellWater &water, double dt,
