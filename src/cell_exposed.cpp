@@ -201,20 +201,19 @@ void find_open_triangles(LAMMPS *lmp, const PairCellSPH *sph, double depth,
   if (bins.empty()) return;
   const HiderSearch search(lmp, bins, depth);
   double **x = lmp->atom->x;
-  int **anglelist = lmp->neighbor->anglelist;
-  for (int n = 0; n < lmp->neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0 || slot[n] < 1) continue;
-    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
-    // glued: two or three of its nodes hold lamella bonds (the glued region's rim runs through
-    // triangles; the majority splits them about evenly between glued and not)
-    if ((node_glued[a] > 0.0) + (node_glued[b] > 0.0) + (node_glued[c] > 0.0) >= 2) {
-      open[n] = 0;
-      continue;
-    }
-    const TriangleFrame t(x, a, b, c);
-    if (t.degenerate) continue;
-    open[n] = search.hidden(b, t) ? 0 : 1;
-  }
+  for_each_wall_triangle(
+      lmp->neighbor->anglelist, lmp->neighbor->nanglelist, [&](int n, int a, int b, int c) {
+        if (slot[n] < 1) return;
+        // glued: two or three of its nodes hold lamella bonds (the glued region's rim runs through
+        // triangles; the majority splits them about evenly between glued and not)
+        if ((node_glued[a] > 0.0) + (node_glued[b] > 0.0) + (node_glued[c] > 0.0) >= 2) {
+          open[n] = 0;
+          return;
+        }
+        const TriangleFrame t(x, a, b, c);
+        if (t.degenerate) return;
+        open[n] = search.hidden(b, t) ? 0 : 1;
+      });
 }
 
 }    // namespace CellMech

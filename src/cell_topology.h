@@ -26,6 +26,16 @@ inline bool same_cell(const LAMMPS_NS::tagint *molecule, int i, int j)
   return !molecule || molecule[i] == molecule[j];
 }
 
+// Each triangle of the walls in the angle list (contract in cell_fields.h): fn(n, a, b, c), n its
+// entry in the list, b its central node. A triangle whose angle type is <= 0 has left the wall (a
+// broken tether took it out, or it failed: angle style cell/membrane) but stays listed until the
+// next neighbor build; it is skipped here, the one place that says which listed triangles are wall.
+template <typename Fn> void for_each_wall_triangle(int *const *anglelist, int nanglelist, Fn &&fn)
+{
+  for (int n = 0; n < nanglelist; n++)
+    if (anglelist[n][3] > 0) fn(n, anglelist[n][0], anglelist[n][1], anglelist[n][2]);
+}
+
 }    // namespace CellMech
 
 #endif

@@ -12,6 +12,7 @@
 #include "cell_index.h"
 #include "cell_physics.h"
 #include "cell_sums.h"
+#include "cell_topology.h"
 #include "neighbor.h"
 
 using namespace LAMMPS_NS;
@@ -53,23 +54,21 @@ void WallTriangles::find_open(LAMMPS *lmp, const PairCellSPH *sph, double depth,
 void WallTriangles::add_areas(LAMMPS *lmp, bool with_rest, CellSums &sums) const
 {
   double **x = lmp->atom->x;
-  int **anglelist = lmp->neighbor->anglelist;
-  for (int n = 0; n < lmp->neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;    // triangle of a broken wall
-    const int m = slot[n];
-    if (m < 1) continue;
-    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
-    double u[3], w[3];
-    for (int d = 0; d < 3; d++) {
-      u[d] = x[b][d] - x[a][d];
-      w[d] = x[c][d] - x[a][d];
-    }
-    const double A = triangle_area(u, w);
-    CellSum &s = sums[m];
-    s.area += A;
-    if (with_rest) s.rest_area += rest_area[n];
-    if (open[n]) s.open_area += A;
-  }
+  for_each_wall_triangle(lmp->neighbor->anglelist, lmp->neighbor->nanglelist,
+                         [&](int n, int a, int b, int c) {
+                           const int m = slot[n];
+                           if (m < 1) return;
+                           double u[3], w[3];
+                           for (int d = 0; d < 3; d++) {
+                             u[d] = x[b][d] - x[a][d];
+                             w[d] = x[c][d] - x[a][d];
+                           }
+                           const double A = triangle_area(u, w);
+                           CellSum &s = sums[m];
+                           s.area += A;
+                           if (with_rest) s.rest_area += rest_area[n];
+                           if (open[n]) s.open_area += A;
+                         });
 }
 
 }    // namespace CellMech

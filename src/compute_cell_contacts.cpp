@@ -161,20 +161,18 @@ void ComputeCellContacts::node_areas()
     memory->create(node_area, nmax, "cell/contacts:node_area");
   }
   for (int i = 0; i < atom->nlocal + atom->nghost; i++) node_area[i] = 0.0;
-  int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;
-    const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
-    double u[3], w[3];
-    for (int d = 0; d < 3; d++) {
-      u[d] = x[b][d] - x[a][d];
-      w[d] = x[cc][d] - x[a][d];
-    }
-    const double third = CellPhysics::triangle_area(u, w) / 3.0;
-    node_area[a] += third;
-    node_area[b] += third;
-    node_area[cc] += third;
-  }
+  CellMech::for_each_wall_triangle(neighbor->anglelist, neighbor->nanglelist,
+                                   [&](int, int a, int b, int cc) {
+                                     double u[3], w[3];
+                                     for (int d = 0; d < 3; d++) {
+                                       u[d] = x[b][d] - x[a][d];
+                                       w[d] = x[cc][d] - x[a][d];
+                                     }
+                                     const double third = CellPhysics::triangle_area(u, w) / 3.0;
+                                     node_area[a] += third;
+                                     node_area[b] += third;
+                                     node_area[cc] += third;
+                                   });
   comm->reverse_comm(this);
 }
 

@@ -231,32 +231,31 @@ void ComputeCellProps::add_triangles(const std::vector<double> &c)
 {
   tagint *molecule = atom->molecule;
   int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;
-    const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
-    const int m = cells.slot(molecule[b]);
-    if (m < 1) continue;
-    double pa[3], pb[3], pc[3];
-    relative(a, m, c, pa);
-    relative(b, m, c, pb);
-    relative(cc, m, c, pc);
-    const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
-    const double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
-    CellMech::CellSum &s = sums[m];
-    s.volume += cone_volume(pa, u, w);
-    s.area += triangle_area(u, w);
-    if (membrane) {
-      double h[3];
-      const double *p[3] = {pa, pb, pc};
-      for (int k = 0; k < 3; k++)
-        h[k] = p[k][0] * normal[0] + p[k][1] * normal[1] + p[k][2] * normal[2];
-      const int above = (h[0] > 0.0) + (h[1] > 0.0) + (h[2] > 0.0);
-      double f[3][3];
-      // only a triangle the plane cuts carries force across it
-      if (above % 3 != 0 && membrane->triangle_forces(anglelist[n][3], a, b, cc, f))
-        s.feq += equatorial_force_triangle(f, h, normal);
-    }
-  }
+  CellMech::for_each_wall_triangle(
+      anglelist, neighbor->nanglelist, [&](int n, int a, int b, int cc) {
+        const int m = cells.slot(molecule[b]);
+        if (m < 1) return;
+        double pa[3], pb[3], pc[3];
+        relative(a, m, c, pa);
+        relative(b, m, c, pb);
+        relative(cc, m, c, pc);
+        const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+        const double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+        CellMech::CellSum &s = sums[m];
+        s.volume += cone_volume(pa, u, w);
+        s.area += triangle_area(u, w);
+        if (membrane) {
+          double h[3];
+          const double *p[3] = {pa, pb, pc};
+          for (int k = 0; k < 3; k++)
+            h[k] = p[k][0] * normal[0] + p[k][1] * normal[1] + p[k][2] * normal[2];
+          const int above = (h[0] > 0.0) + (h[1] > 0.0) + (h[2] > 0.0);
+          double f[3][3];
+          // only a triangle the plane cuts carries force across it
+          if (above % 3 != 0 && membrane->triangle_forces(anglelist[n][3], a, b, cc, f))
+            s.feq += equatorial_force_triangle(f, h, normal);
+        }
+      });
 }
 
 // the wall's tethers (stretch, Eq. 23) and the middle-lamella bonds to other cells
@@ -349,19 +348,18 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
   double **x = atom->x;
   tagint *molecule = atom->molecule;
   std::vector<double> mine;
-  int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;
-    const int m = cells.slot(molecule[anglelist[n][1]]);
-    if (m < 1) continue;
-    mine.push_back((double) m);
-    for (int k = 0; k < 3; k++) {
-      double p[3];
-      for (int d = 0; d < 3; d++) p[d] = x[anglelist[n][k]][d] - c[3 * m + d];
-      CellMech::minimum_image(domain, FLERR, p[0], p[1], p[2]);
-      mine.insert(mine.end(), p, p + 3);
-    }
-  }
+  CellMech::for_each_wall_triangle(neighbor->anglelist, neighbor->nanglelist,
+                                   [&](int, int a, int b, int cc) {
+                                     const int m = cells.slot(molecule[b]);
+                                     if (m < 1) return;
+                                     mine.push_back((double) m);
+                                     for (const int node : {a, b, cc}) {
+                                       double p[3];
+                                       for (int d = 0; d < 3; d++) p[d] = x[node][d] - c[3 * m + d];
+                                       CellMech::minimum_image(domain, FLERR, p[0], p[1], p[2]);
+                                       mine.insert(mine.end(), p, p + 3);
+                                     }
+                                   });
   const std::vector<double> tris = CellMech::allgather_list(mine, MPI_DOUBLE, world);
   const int total = tris.size();
 
