@@ -5,13 +5,25 @@
    wall triangles (angles, contract in cell_fields.h) and tethers, glued to
    other cells by lamella bonds. Nothing here includes a style, so that any
    style -- and any new per-pair consumer -- can call these without
-   pulling in another.
+   pulling in another. The surgery a failure makes on the topology (the
+   tethers and triangles of bond style cell/tether and angle style
+   cell/membrane, the lamella bonds of bond style cell/lamella) is here
+   too, in cell_topology.cpp; the failure fixes decide when it is made.
 ------------------------------------------------------------------------- */
 
 #ifndef CELLMECH_CELL_TOPOLOGY_H
 #define CELLMECH_CELL_TOPOLOGY_H
 
 #include "lmptype.h"
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace LAMMPS_NS {
+class Atom;
+class LAMMPS;
+}    // namespace LAMMPS_NS
 
 namespace CellMech {
 
@@ -35,6 +47,25 @@ template <typename Fn> void for_each_wall_triangle(int *const *anglelist, int na
   for (int n = 0; n < nanglelist; n++)
     if (anglelist[n][3] > 0) fn(n, anglelist[n][0], anglelist[n][1], anglelist[n][2]);
 }
+
+// An edge of a wall, or a bond: the tags of its two atoms.
+using Edge = std::pair<LAMMPS_NS::tagint, LAMMPS_NS::tagint>;
+// Whether the triangle (or a hinge's wing) with these three tags, in any order, is gone.
+using TrianglePredicate =
+    std::function<bool(LAMMPS_NS::tagint, LAMMPS_NS::tagint, LAMMPS_NS::tagint)>;
+
+// Drop the atom with tag other from the 1-2 special list of local atom i; false when it is not a
+// 1-2 neighbour (a second bond between them broke before).
+bool remove_special12(LAMMPS_NS::Atom *, int i, LAMMPS_NS::tagint other);
+// Drop the bond to partner from atom i's bond arrays (the last bond takes its slot); false when
+// atom i stores no such bond.
+bool remove_bond(LAMMPS_NS::Atom *, int i, LAMMPS_NS::tagint partner);
+// Collective: the nodes of each edge leave each other's 1-2 list and, with bonds, the bond arrays
+// and the global bond count. Every rank calls it with the same edges.
+void release_edges(LAMMPS_NS::LAMMPS *, const std::vector<Edge> &edges, bool bonds);
+// Collective: the triangles for which is_gone holds leave the angle arrays and the global angle
+// count, and the hinges (dihedrals) with such a triangle as a wing leave with them.
+void remove_triangles(LAMMPS_NS::LAMMPS *, const TrianglePredicate &is_gone);
 
 }    // namespace CellMech
 
