@@ -19,7 +19,8 @@
        virtual particle in b's neighbour list, within reach of x_b;
      - a triangle whose angle type is <= 0 has been taken out of the wall by
        a broken tether (bond style cell/tether) or has failed (angle style
-       cell/membrane) and counts nowhere.
+       cell/membrane) and counts nowhere (CellMech::for_each_wall_triangle,
+       cell_topology.h, the one loop over the triangles, skips it).
 ------------------------------------------------------------------------- */
 
 #ifndef CELLMECH_CELL_FIELDS_H
