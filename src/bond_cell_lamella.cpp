@@ -29,9 +29,9 @@
 #include "cell_mpi.h"
 #include "cell_physics.h"
 #include "cell_restart.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_cell_tether_break.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -131,8 +131,8 @@ void BondCellLamella::compute(int eflag, int vflag)
     // every rank
     if (delta > cohesive_break_opening(dc[type])) {
       bondlist[n][2] = 0;
-      FixCellTetherBreak::remove_bond(atom, i1, tag[i2]);
-      if (!newton_bond && i2 < nlocal) FixCellTetherBreak::remove_bond(atom, i2, tag[i1]);
+      CellMech::remove_bond(atom, i1, tag[i2]);
+      if (!newton_bond && i2 < nlocal) CellMech::remove_bond(atom, i2, tag[i1]);
       const bool first = tag[i1] < tag[i2];
       breaker->debonded(first ? tag[i1] : tag[i2], first ? tag[i2] : tag[i1],
                         first ? mol[i1] : mol[i2], first ? mol[i2] : mol[i1], A);

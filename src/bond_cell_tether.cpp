@@ -20,6 +20,7 @@
 #include "cell_physics.h"
 #include "cell_restart.h"
 #include "cell_simd.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_cell_tether_break.h"
@@ -160,8 +161,8 @@ void BondCellTether::compute(int eflag, int vflag)
     // the topology with it on every rank.
     if (lamf[type] > 0.0 && lam[n] > lamf[type]) {
       bondlist[n][2] = 0;
-      FixCellTetherBreak::remove_bond(atom, i1, tag[i2]);
-      if (!newton_bond && i2 < nlocal) FixCellTetherBreak::remove_bond(atom, i2, tag[i1]);
+      CellMech::remove_bond(atom, i1, tag[i2]);
+      if (!newton_bond && i2 < nlocal) CellMech::remove_bond(atom, i2, tag[i1]);
       breaker->tether_broke(tag[i1], tag[i2]);
       continue;
     }

@@ -19,7 +19,8 @@
        virtual particle in b's neighbour list, within reach of x_b;
      - a triangle whose angle type is <= 0 has been taken out of the wall by
        a broken tether (bond style cell/tether) or has failed (angle style
-       cell/membrane) and counts nowhere.
+       cell/membrane) and counts nowhere (CellMech::for_each_wall_triangle,
+       cell_topology.h, the one loop over the triangles, skips it).
 ------------------------------------------------------------------------- */
 
 #ifndef CELLMECH_CELL_FIELDS_H
@@ -49,17 +50,17 @@ constexpr char DRHO_FIELD[] = "drho";      // d_drho: its continuity rate (Eq. 7
    broken is still part of its wall and the broken and debonded counts
    (fix cell_broken, cell_debonded) of every node are seen. Fluid never has
    bonds: pair cell/sph refuses a bonded atom of a fluid type. Valid for
-   local atoms (the per-atom counts of the fixes are).
+   local atoms (the per-atom counts of the fixes are). Collective: the
+   counts are read synced (FixCellFailure::synced_counts).
 ------------------------------------------------------------------------- */
 
 class WallNodes {
  public:
-  explicit WallNodes(LAMMPS_NS::LAMMPS *lmp) : nspecial(lmp->atom->nspecial)
+  explicit WallNodes(LAMMPS_NS::LAMMPS *lmp) :
+      nspecial(lmp->atom->nspecial),
+      nbroken(LAMMPS_NS::FixCellFailure::synced_counts(lmp, LAMMPS_NS::FixCellTetherBreak::ID)),
+      ndebonded(LAMMPS_NS::FixCellFailure::synced_counts(lmp, LAMMPS_NS::FixCellLamellaBreak::ID))
   {
-    auto *broken = lmp->modify->get_fix_by_id(LAMMPS_NS::FixCellTetherBreak::ID);
-    auto *debonded = lmp->modify->get_fix_by_id(LAMMPS_NS::FixCellLamellaBreak::ID);
-    nbroken = broken ? broken->vector_atom : nullptr;
-    ndebonded = debonded ? debonded->vector_atom : nullptr;
   }
   bool operator()(int i) const
   {
@@ -70,16 +71,6 @@ class WallNodes {
   int **nspecial;
   const double *nbroken, *ndebonded;
 };
-
-// Whether two particles belong to one cell (molecule ID), so that SPH may pair them: the wall
-// between two cells is closed, so no pressure, viscosity, density rate or shear of one cell's
-// protoplasm comes from another's, even where glued walls bring them within the kernel support.
-// Without molecule IDs all particles are one body of fluid. The rule of pair cell/sph and of
-// everything that sums over its pairs (compute cell/shear/atom).
-inline bool same_cell(const LAMMPS_NS::tagint *molecule, int i, int j)
-{
-  return !molecule || molecule[i] == molecule[j];
-}
 
 // Rest length of the bond i-j (tether or lamella): the distance of the nodes' reference positions.
 inline double rest_length(double *const *ref, int i, int j)

@@ -5,13 +5,22 @@
    rows, wall triangles) are built from what each rank owns and must come
    out the same on all ranks: the entries are concatenated in rank order,
    so sums taken over them in that order agree to the bit everywhere.
+   PairSums: sums per pair of cells kept by their IDs, summed so.
 ------------------------------------------------------------------------- */
 
 #ifndef CELLMECH_CELL_MPI_H
 #define CELLMECH_CELL_MPI_H
 
+#include "lmptype.h"
+
 #include <mpi.h>
 
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <map>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CellMech {
@@ -46,6 +55,56 @@ inline bool any_rank_has(int n, MPI_Comm world)
   MPI_Allreduce(&n, &all, 1, MPI_INT, MPI_SUM, world);
   return all > 0;
 }
+
+// Sums of N doubles per unordered pair of cells, taken on each rank and added up over all ranks.
+// The keys stay tagint, as molecule IDs are (an int cast folds IDs past 2^31 onto others); a
+// caller may key by slots too. Each rank's rows, gathered in rank order, are added into an ordered
+// map, so every rank gets the same sums to the bit.
+template <int N> class PairSums {
+ public:
+  using Key = std::pair<LAMMPS_NS::tagint, LAMMPS_NS::tagint>;
+  using Row = std::array<double, N>;
+
+  // the row of the pair (a, b), either order; zeros when new
+  Row &operator()(LAMMPS_NS::tagint a, LAMMPS_NS::tagint b)
+  {
+    const Key key(std::min(a, b), std::max(a, b));
+    auto it = rows.find(key);
+    if (it == rows.end()) it = rows.emplace(key, Row{}).first;
+    return it->second;
+  }
+  // by key, lower ID first
+  const std::map<Key, Row> &all() const { return rows; }
+
+  // collective: the rows of all ranks added up, the same on every rank (one gather, as bytes, so
+  // that the keys keep every bit)
+  PairSums summed(MPI_Comm world) const
+  {
+    std::vector<char> mine(rows.size() * sizeof(Entry));
+    size_t k = 0;
+    for (const auto &kv : rows) {
+      const Entry e = {{kv.first.first, kv.first.second}, kv.second};
+      std::memcpy(&mine[k++ * sizeof(Entry)], &e, sizeof(Entry));
+    }
+    const std::vector<char> all = allgather_list(mine, MPI_BYTE, world);
+    PairSums total;
+    for (size_t at = 0; at < all.size(); at += sizeof(Entry)) {
+      Entry e;
+      std::memcpy(&e, &all[at], sizeof(Entry));
+      Row &r = total(e.key[0], e.key[1]);
+      for (int d = 0; d < N; d++) r[d] += e.value[d];
+    }
+    return total;
+  }
+
+ private:
+  struct Entry {
+    LAMMPS_NS::tagint key[2];
+    Row value;
+  };
+  static_assert(std::is_trivially_copyable<Entry>::value, "PairSums entries travel as bytes");
+  std::map<Key, Row> rows;
+};
 
 }    // namespace CellMech
 

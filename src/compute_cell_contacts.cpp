@@ -38,6 +38,7 @@
 #include "bond.h"
 #include "cell_mpi.h"
 #include "cell_physics.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "compute_cell_props.h"
 #include "error.h"
@@ -59,13 +60,6 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
-
-namespace {
-// per-pair sums before the reduction: bonds, glued area, lamella force (3), contact force (3),
-// contacts, contact area (both sides)
-constexpr int NSUM = 10;
-using Sums = std::array<double, NSUM>;
-}    // namespace
 
 ComputeCellContacts::ComputeCellContacts(LAMMPS *_lmp, int narg, char **arg) :
     Compute(_lmp, narg, arg), nmax(0), node_area(nullptr), ialam(-1), nrows_max(0),
@@ -139,68 +133,80 @@ void ComputeCellContacts::compute_array()
   // the failures found so far reach every rank's special lists and the debond table first
   auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
 
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  double **x = atom->x;
-  int *type = atom->type;
-  tagint *molecule = atom->molecule;
-  int *mask = atom->mask;
-
   CellMech::CellIndex cells;
   cells.build(lmp);
   std::vector<double> c;
   ComputeCellProps::wall_centres(lmp, cells, sph, c);
 
-  // each node's share of its triangles' current area, summed on the owner
+  node_areas();
+  PairSums local;
+  add_lamella_bonds(local);
+  add_contacts(local);
+  Rows rows;
+  std::map<PairSums::Key, std::array<double, 6>> forces;    // lamella, contact vectors
+  sum_rows(local, rows, forces);
+  if (debonded && debonded->array_flag && debonded->size_array_rows > 0)
+    add_debonded(debonded, cells, rows);
+  add_normals(cells, c, forces, rows);
+  fill_array(rows);
+}
+
+// each node's share of its triangles' current area, summed on the owner
+void ComputeCellContacts::node_areas()
+{
+  double **x = atom->x;
   if (atom->nmax > nmax) {
     memory->destroy(node_area);
     nmax = atom->nmax;
     memory->create(node_area, nmax, "cell/contacts:node_area");
   }
-  for (int i = 0; i < nall; i++) node_area[i] = 0.0;
-  int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;
-    const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
-    double u[3], w[3];
-    for (int d = 0; d < 3; d++) {
-      u[d] = x[b][d] - x[a][d];
-      w[d] = x[cc][d] - x[a][d];
-    }
-    const double third = CellPhysics::triangle_area(u, w) / 3.0;
-    node_area[a] += third;
-    node_area[b] += third;
-    node_area[cc] += third;
-  }
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++) node_area[i] = 0.0;
+  CellMech::for_each_wall_triangle(neighbor->anglelist, neighbor->nanglelist,
+                                   [&](int, int a, int b, int cc) {
+                                     double u[3], w[3];
+                                     for (int d = 0; d < 3; d++) {
+                                       u[d] = x[b][d] - x[a][d];
+                                       w[d] = x[cc][d] - x[a][d];
+                                     }
+                                     const double third = CellPhysics::triangle_area(u, w) / 3.0;
+                                     node_area[a] += third;
+                                     node_area[b] += third;
+                                     node_area[cc] += third;
+                                   });
   comm->reverse_comm(this);
+}
 
-  std::map<std::pair<int, int>, Sums> local;
-  auto row = [&](tagint m1, tagint m2) -> Sums & {
-    auto key = std::make_pair((int) MIN(m1, m2), (int) MAX(m1, m2));
-    auto it = local.find(key);
-    if (it == local.end()) it = local.emplace(key, Sums{}).first;
-    return it->second;
-  };
-
-  // lamella bonds: bonds between two cells, each once (newton_bond on); force on the higher cell
+// lamella bonds: bonds between two cells, each once (newton_bond on); force on the higher cell
+void ComputeCellContacts::add_lamella_bonds(PairSums &local)
+{
+  double **x = atom->x;
+  const tagint *molecule = atom->molecule;
+  const int *mask = atom->mask;
   const double *alam = ialam >= 0 ? atom->dvector[ialam] : nullptr;
   int **bondlist = neighbor->bondlist;
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int i1 = bondlist[n][0], i2 = bondlist[n][1], btype = bondlist[n][2];
-    if (btype <= 0 || molecule[i1] == molecule[i2]) continue;
+    if (btype <= 0 || CellMech::same_cell(molecule, i1, i2)) continue;
     if (!(mask[i1] & groupbit) || !(mask[i2] & groupbit)) continue;
-    Sums &s = row(molecule[i1], molecule[i2]);
-    s[0] += 1.0;
-    if (alam) s[1] += CellMech::lamella_area(alam, i1, i2);
+    PairSums::Row &s = local(molecule[i1], molecule[i2]);
+    s[BONDS] += 1.0;
+    if (alam) s[BONDS_AREA] += CellMech::lamella_area(alam, i1, i2);
     const double del[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
     double fbond = 0.0;
     force->bond->single(btype, del[0] * del[0] + del[1] * del[1] + del[2] * del[2], i1, i2, fbond);
     const double sign = molecule[i1] > molecule[i2] ? 1.0 : -1.0;    // force on i1 is del fbond
-    for (int d = 0; d < 3; d++) s[2 + d] += sign * del[d] * fbond;
+    for (int d = 0; d < 3; d++) s[BONDS_FORCE + d] += sign * del[d] * fbond;
   }
+}
 
-  // wall-wall contacts between cells: the full list sees each node pair from both nodes; the
-  // force is taken on the node of the higher cell, the area on every node that touches
+// wall-wall contacts between cells: the full list sees each node pair from both nodes; the force
+// is taken on the node of the higher cell, the area on every node that touches
+void ComputeCellContacts::add_contacts(PairSums &local)
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const tagint *molecule = atom->molecule;
+  const int *mask = atom->mask;
   neighbor->build_one(list);
   double *special_lj = force->special_lj;
   int **nspecial = atom->nspecial;
@@ -213,7 +219,8 @@ void ComputeCellContacts::compute_array()
     // glued: the other cells among its 1-2 neighbours
     for (int k = 0; k < nspecial[i][0]; k++) {
       const int j = atom->map(special[i][k]);
-      if (j >= 0 && molecule[j] != molecule[i] && (mask[j] & groupbit)) touched.insert(molecule[j]);
+      if (j >= 0 && !CellMech::same_cell(molecule, i, j) && (mask[j] & groupbit))
+        touched.insert(molecule[j]);
     }
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -221,8 +228,8 @@ void ComputeCellContacts::compute_array()
       const double factor_lj = special_lj[sbmask(j)];
       j &= NEIGHMASK;
       const int jtype = type[j];
-      if (molecule[j] == molecule[i] || !(mask[j] & groupbit) || (sph && sph->is_fluid(jtype)) ||
-          nspecial[j][0] == 0)
+      if (CellMech::same_cell(molecule, i, j) || !(mask[j] & groupbit) ||
+          (sph && sph->is_fluid(jtype)) || nspecial[j][0] == 0)
         continue;
       const int lo = MIN(itype, jtype), hi = MAX(itype, jtype);
       if (!contact->setflag[lo][hi]) continue;
@@ -234,78 +241,87 @@ void ComputeCellContacts::compute_array()
       if (molecule[i] < molecule[j]) continue;
       double fpair = 0.0;
       contact->single(i, j, itype, jtype, rsq, 0.0, factor_lj, fpair);
-      Sums &s = row(molecule[i], molecule[j]);
-      for (int d = 0; d < 3; d++) s[5 + d] += del[d] * fpair;
-      s[8] += 1.0;
+      PairSums::Row &s = local(molecule[i], molecule[j]);
+      for (int d = 0; d < 3; d++) s[CONTACTS_FORCE + d] += del[d] * fpair;
+      s[CONTACTS] += 1.0;
     }
-    for (const tagint m : touched) row(molecule[i], m)[9] += node_area[i];
+    for (const tagint m : touched) local(molecule[i], m)[CONTACTS_AREA] += node_area[i];
   }
+}
 
-  // the same rows on every rank: gather (i, j, sums) and add up
-  std::vector<double> mine;
-  for (const auto &kv : local) {
-    mine.push_back(kv.first.first);
-    mine.push_back(kv.first.second);
-    mine.insert(mine.end(), kv.second.begin(), kv.second.end());
-  }
-  const std::vector<double> gathered = CellMech::allgather_list(mine, MPI_DOUBLE, world);
-  const int total = gathered.size();
-  std::map<std::pair<int, int>, std::array<double, NCOL>> rows;
-  auto global_row = [&](int m1, int m2) -> std::array<double, NCOL> & {
-    auto key = std::make_pair(MIN(m1, m2), MAX(m1, m2));
-    auto it = rows.find(key);
-    if (it == rows.end()) {
-      std::array<double, NCOL> r{};
-      r[CELL_I] = key.first;
-      r[CELL_J] = key.second;
-      it = rows.emplace(key, r).first;
+// the same rows on every rank: every rank's sums added up, in the columns of the array
+void ComputeCellContacts::sum_rows(const PairSums &local, Rows &rows,
+                                   std::map<PairSums::Key, std::array<double, 6>> &forces)
+{
+  const PairSums total = local.summed(world);
+  for (const auto &kv : total.all()) {
+    const PairSums::Row &s = kv.second;
+    auto &r = row(rows, kv.first.first, kv.first.second);
+    r[NBONDS] = s[BONDS];
+    r[GLUED_AREA] = s[BONDS_AREA];
+    r[NCONTACTS] = s[CONTACTS];
+    r[CONTACT_AREA] = 0.5 * s[CONTACTS_AREA];    // both sides
+    auto &f = forces[kv.first];
+    for (int d = 0; d < 3; d++) {
+      f[d] = s[BONDS_FORCE + d];
+      f[3 + d] = s[CONTACTS_FORCE + d];
     }
-    return it->second;
-  };
-  std::map<std::pair<int, int>, std::array<double, 6>> forces;    // lamella, contact vectors
-  for (int k = 0; k < total; k += 2 + NSUM) {
-    const int m1 = (int) gathered[k], m2 = (int) gathered[k + 1];
-    const double *s = &gathered[k + 2];
-    auto &r = global_row(m1, m2);
-    r[NBONDS] += s[0];
-    r[GLUED_AREA] += s[1];
-    r[NCONTACTS] += s[8];
-    r[CONTACT_AREA] += 0.5 * s[9];
-    auto &f = forces[std::make_pair(m1, m2)];
-    for (int d = 0; d < 6; d++) f[d] += s[2 + d];
   }
+}
 
-  // debonded bonds: the per-cell-pair table of fix cell_debonded (cell i, cell j, bonds, area)
-  if (debonded && debonded->array_flag && debonded->size_array_rows > 0) {
-    // per slot: the cell has a wall node in the group (slot 0: none, or a cell no longer there).
-    // The table is the same on every rank, so every rank makes this reduction or none does; group
-    // all takes every row, as a cell whose atoms have all been deleted has none left to be in it
-    const bool all = (igroup == 0);
-    std::vector<int> mine_in(cells.size() + 1, 0), in_group(cells.size() + 1, 0);
-    if (!all) {
-      const CellMech::WallNodes wall_node(lmp);
-      for (int i = 0; i < nlocal; i++) {
-        const int m = cells.slot(molecule[i]);
-        if (m >= 1 && (mask[i] & groupbit) && wall_node(i)) mine_in[m] = 1;
-      }
-      MPI_Allreduce(mine_in.data(), in_group.data(), (int) in_group.size(), MPI_INT, MPI_MAX,
-                    world);
-    }
-    for (int r = 0; r < debonded->size_array_rows; r++) {
-      const int m1 = (int) debonded->compute_array(r, 0), m2 = (int) debonded->compute_array(r, 1);
-      if (!all && (!in_group[cells.slot(m1)] || !in_group[cells.slot(m2)])) continue;
-      auto &g = global_row(m1, m2);
-      g[NDEBONDED] += debonded->compute_array(r, 2);
-      g[DEBONDED_AREA] += debonded->compute_array(r, 3);
-    }
+// the row of cells m1, m2 (either order), with its cell columns set when new
+std::array<double, ComputeCellContacts::NCOL> &ComputeCellContacts::row(Rows &rows, tagint m1,
+                                                                        tagint m2)
+{
+  const PairSums::Key key(MIN(m1, m2), MAX(m1, m2));
+  auto it = rows.find(key);
+  if (it == rows.end()) {
+    std::array<double, NCOL> r{};
+    r[CELL_I] = key.first;
+    r[CELL_J] = key.second;
+    it = rows.emplace(key, r).first;
   }
+  return it->second;
+}
 
-  // normal components along the line of the centres, from the lower cell to the higher one
+// debonded bonds: the per-cell-pair table of fix cell_debonded (cell i, cell j, bonds, area)
+void ComputeCellContacts::add_debonded(Fix *debonded, const CellMech::CellIndex &cells, Rows &rows)
+{
+  // per slot: the cell has a wall node in the group (slot 0: none, or a cell no longer there).
+  // The table is the same on every rank, so every rank makes this reduction or none does; group
+  // all takes every row, as a cell whose atoms have all been deleted has none left to be in it
+  const bool all = (igroup == 0);
+  const tagint *molecule = atom->molecule;
+  const int *mask = atom->mask;
+  std::vector<int> mine_in(cells.size() + 1, 0), in_group(cells.size() + 1, 0);
+  if (!all) {
+    const CellMech::WallNodes wall_node(lmp);
+    for (int i = 0; i < atom->nlocal; i++) {
+      const int m = cells.slot(molecule[i]);
+      if (m >= 1 && (mask[i] & groupbit) && wall_node(i)) mine_in[m] = 1;
+    }
+    MPI_Allreduce(mine_in.data(), in_group.data(), (int) in_group.size(), MPI_INT, MPI_MAX, world);
+  }
+  for (int r = 0; r < debonded->size_array_rows; r++) {
+    const auto m1 = (tagint) debonded->compute_array(r, 0);
+    const auto m2 = (tagint) debonded->compute_array(r, 1);
+    if (!all && (!in_group[cells.slot(m1)] || !in_group[cells.slot(m2)])) continue;
+    auto &g = row(rows, m1, m2);
+    g[NDEBONDED] += debonded->compute_array(r, 2);
+    g[DEBONDED_AREA] += debonded->compute_array(r, 3);
+  }
+}
+
+// normal components along the line of the centres, from the lower cell to the higher one
+void ComputeCellContacts::add_normals(const CellMech::CellIndex &cells,
+                                      const std::vector<double> &c,
+                                      const std::map<PairSums::Key, std::array<double, 6>> &forces,
+                                      Rows &rows)
+{
   for (auto &kv : rows) {
-    const int m1 = kv.first.first, m2 = kv.first.second;
     auto &r = kv.second;
     double n[3], len = 0.0;
-    const int s1 = cells.slot(m1), s2 = cells.slot(m2);
+    const int s1 = cells.slot(kv.first.first), s2 = cells.slot(kv.first.second);
     if (s1 >= 1 && s2 >= 1)
       for (int d = 0; d < 3; d++) {
         n[d] = c[3 * s2 + d] - c[3 * s1 + d];
@@ -324,7 +340,10 @@ void ComputeCellContacts::compute_array()
       r[F_CONTACT] = fc;
     }
   }
+}
 
+void ComputeCellContacts::fill_array(const Rows &rows)
+{
   const int nrows = rows.size();
   if (nrows > nrows_max || !array) {
     memory->destroy(array);

@@ -37,6 +37,8 @@
 #include "bond_cell_tether.h"
 #include "cell_mpi.h"
 #include "cell_physics.h"
+#include "cell_sums.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -192,7 +194,7 @@ void ComputeCellProps::compute_array()
 {
   invoked_array = update->ntimestep;
   // the failures found so far reach every rank's topology and counts first
-  auto *broken = FixCellFailure::synced(lmp, FixCellTetherBreak::ID);
+  const double *nbroken = FixCellFailure::synced_counts(lmp, FixCellTetherBreak::ID);
   auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
 
   cells.build(lmp);
@@ -201,140 +203,138 @@ void ComputeCellProps::compute_array()
   std::vector<double> c;
   wall_centres(lmp, cells, sph, c);
 
-  // sums per cell: volume, area, pressure, mass, nfluid, stretch sum, nbonds, feq, broken
-  // tethers, lamella bonds, glued area | max stretch
-  const int NS = 11;
-  std::vector<double> local(NS * (ncells + 1), 0.0), all(NS * (ncells + 1));
-  std::vector<double> lmax_local(ncells + 1, 0.0), lmax_all(ncells + 1);
+  sums.clear(ncells);
+  std::vector<double> lmax(ncells + 1, 0.0);    // max tether stretch
+  add_triangles(c);
+  sums.add_broken_tethers(lmp, cells, nbroken);
+  if (sph) sums.add_fluid(lmp, sph, cells, groupbit);
+  add_bonds(c, lmax);
+  sums.reduce(world);
+  MPI_Allreduce(MPI_IN_PLACE, lmax.data(), ncells + 1, MPI_DOUBLE, MPI_MAX, world);
+
+  for (int m = 1; m <= ncells; m++) fill_row(m, sums[m], lmax[m], c);
+  if (debonded && debonded->array_flag) add_debonded(debonded);
+  if (leaks) count_leaks(c);
+}
+
+// a point of cell m relative to its centre c, in the minimum image
+void ComputeCellProps::relative(int i, int m, const std::vector<double> &c, double *out) const
+{
+  for (int d = 0; d < 3; d++) out[d] = atom->x[i][d] - c[3 * m + d];
+  CellMech::minimum_image(domain, FLERR, out[0], out[1], out[2]);
+}
+
+// A broken tether takes its two triangles out of the wall (bond style cell/tether): after a
+// failure the volume is that of the cones from the centre over the remaining triangles. The
+// triangles' orientation and cell follow the contract of cell_fields.h.
+void ComputeCellProps::add_triangles(const std::vector<double> &c)
+{
+  tagint *molecule = atom->molecule;
+  int **anglelist = neighbor->anglelist;
+  CellMech::for_each_wall_triangle(
+      anglelist, neighbor->nanglelist, [&](int n, int a, int b, int cc) {
+        const int m = cells.slot(molecule[b]);
+        if (m < 1) return;
+        double pa[3], pb[3], pc[3];
+        relative(a, m, c, pa);
+        relative(b, m, c, pb);
+        relative(cc, m, c, pc);
+        const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+        const double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+        CellMech::CellSum &s = sums[m];
+        s.volume += cone_volume(pa, u, w);
+        s.area += triangle_area(u, w);
+        if (membrane) {
+          double h[3];
+          const double *p[3] = {pa, pb, pc};
+          for (int k = 0; k < 3; k++)
+            h[k] = p[k][0] * normal[0] + p[k][1] * normal[1] + p[k][2] * normal[2];
+          const int above = (h[0] > 0.0) + (h[1] > 0.0) + (h[2] > 0.0);
+          double f[3][3];
+          // only a triangle the plane cuts carries force across it
+          if (above % 3 != 0 && membrane->triangle_forces(anglelist[n][3], a, b, cc, f))
+            s.feq += equatorial_force_triangle(f, h, normal);
+        }
+      });
+}
+
+// the wall's tethers (stretch, Eq. 23) and the middle-lamella bonds to other cells
+void ComputeCellProps::add_bonds(const std::vector<double> &c, std::vector<double> &lmax)
+{
   double **x = atom->x;
   double **ref = atom->darray[iref];
   tagint *molecule = atom->molecule;
-
-  auto rel = [&](int i, int m, double *out) {
-    for (int d = 0; d < 3; d++) out[d] = x[i][d] - c[3 * m + d];
-    CellMech::minimum_image(domain, FLERR, out[0], out[1], out[2]);
-  };
-
-  // A broken tether takes its two triangles out of the wall (bond style cell/tether): after a
-  // failure the volume is that of the cones from the centre over the remaining triangles. The
-  // triangles' orientation and cell follow the contract of cell_fields.h.
-  int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;
-    const int a = anglelist[n][0], b = anglelist[n][1], cc = anglelist[n][2];
-    const int m = cells.slot(molecule[b]);
-    if (m < 1) continue;
-    double pa[3], pb[3], pc[3];
-    rel(a, m, pa);
-    rel(b, m, pb);
-    rel(cc, m, pc);
-    const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
-    const double w[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
-    local[NS * m + 0] += cone_volume(pa, u, w);
-    local[NS * m + 1] += triangle_area(u, w);
-    if (membrane) {
-      double s[3];
-      const double *p[3] = {pa, pb, pc};
-      for (int k = 0; k < 3; k++)
-        s[k] = p[k][0] * normal[0] + p[k][1] * normal[1] + p[k][2] * normal[2];
-      const int above = (s[0] > 0.0) + (s[1] > 0.0) + (s[2] > 0.0);
-      double f[3][3];
-      // only a triangle the plane cuts carries force across it
-      if (above % 3 != 0 && membrane->triangle_forces(anglelist[n][3], a, b, cc, f))
-        local[NS * m + 7] += equatorial_force_triangle(f, s, normal);
-    }
-  }
-
-  // broken tethers: each counted at both of its nodes by fix CELL_TETHER_BREAK
-  if (broken)
-    for (int i = 0; i < atom->nlocal; i++) {
-      const int m = cells.slot(molecule[i]);
-      if (m >= 1) local[NS * m + 8] += 0.5 * broken->vector_atom[i];
-    }
-
-  if (sph) {
-    const double *rho = sph->rho_array();
-    for (int i = 0; i < atom->nlocal; i++) {
-      const int m = cells.slot(molecule[i]);
-      if (m < 1 || !sph->is_fluid(atom->type[i]) || !(atom->mask[i] & groupbit)) continue;
-      local[NS * m + 2] += sph->pressure(atom->type[i], rho[i]);
-      local[NS * m + 3] += atom->rmass[i];
-      local[NS * m + 4] += 1.0;
-    }
-  }
-
+  const double *alam = ialam >= 0 ? atom->dvector[ialam] : nullptr;
   int **bondlist = neighbor->bondlist;
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int i1 = bondlist[n][0], i2 = bondlist[n][1], type = bondlist[n][2];
     if (type <= 0) continue;
     const int m = cells.slot(molecule[i1]);
     if (m < 1) continue;
-    if (molecule[i2] != molecule[i1]) {
+    if (!CellMech::same_cell(molecule, i1, i2)) {
       // a middle-lamella bond glues this cell to another: both cells count it and its area
-      const double *alam = ialam >= 0 ? atom->dvector[ialam] : nullptr;
       const double area = alam ? CellMech::lamella_area(alam, i1, i2) : 0.0;
       for (const int mm : {m, cells.slot(molecule[i2])})
         if (mm >= 1) {
-          local[NS * mm + 9] += 1.0;
-          local[NS * mm + 10] += area;
+          sums[mm].nlamella += 1.0;
+          sums[mm].glued_area += area;
         }
       continue;
     }
     double del[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
     const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
     const double lam = sqrt(rsq) / CellMech::rest_length(ref, i1, i2);
-    local[NS * m + 5] += lam;
-    local[NS * m + 6] += 1.0;
-    lmax_local[m] = MAX(lmax_local[m], lam);
+    sums[m].stretch += lam;
+    sums[m].ntethers += 1.0;
+    lmax[m] = MAX(lmax[m], lam);
     double p1[3], p2[3];
-    rel(i1, m, p1);
-    rel(i2, m, p2);
+    relative(i1, m, c, p1);
+    relative(i2, m, c, p2);
     const double s1 = p1[0] * normal[0] + p1[1] * normal[1] + p1[2] * normal[2];
     const double s2 = p2[0] * normal[0] + p2[1] * normal[1] + p2[2] * normal[2];
     if (crosses_equator(s1, s2)) {
-      double fforce;
+      double fforce = 0.0;    // bond style zero (a membrane wall's tethers) leaves it unset
       force->bond->single(type, rsq, i1, i2, fforce);
       const double dn = del[0] * normal[0] + del[1] * normal[1] + del[2] * normal[2];
-      local[NS * m + 7] += equatorial_force_term(fforce, dn, s1, s2);
+      sums[m].feq += equatorial_force_term(fforce, dn, s1, s2);
     }
   }
+}
 
-  MPI_Allreduce(local.data(), all.data(), NS * (ncells + 1), MPI_DOUBLE, MPI_SUM, world);
-  MPI_Allreduce(lmax_local.data(), lmax_all.data(), ncells + 1, MPI_DOUBLE, MPI_MAX, world);
+void ComputeCellProps::fill_row(int m, const CellMech::CellSum &s, double lmax,
+                                const std::vector<double> &c)
+{
+  double *row = array[m - 1];
+  row[VOLUME] = s.volume;
+  row[AREA] = s.area;
+  row[PRESSURE] = s.nfluid > 0 ? s.pressure / s.nfluid : 0.0;
+  row[MASS] = s.mass;
+  row[NFLUID] = s.nfluid;
+  row[LAM_MEAN] = s.ntethers > 0 ? s.stretch / s.ntethers : 0.0;
+  row[LAM_MAX] = lmax;
+  row[FEQ] = s.feq;
+  row[XC] = c[3 * m];
+  row[YC] = c[3 * m + 1];
+  row[ZC] = c[3 * m + 2];
+  row[NLEAK] = 0.0;
+  row[NBROKEN] = s.broken;
+  row[NLAMELLA] = s.nlamella;
+  row[GLUED_AREA] = s.glued_area;
+  row[NDEBONDED] = row[DEBONDED_AREA] = 0.0;
+  row[MOLECULE] = (double) cells.id(m);
+}
 
-  for (int m = 1; m <= ncells; m++) {
-    double *row = array[m - 1];
-    const double *s = &all[NS * m];
-    row[VOLUME] = s[0];
-    row[AREA] = s[1];
-    row[PRESSURE] = s[4] > 0 ? s[2] / s[4] : 0.0;
-    row[MASS] = s[3];
-    row[NFLUID] = s[4];
-    row[LAM_MEAN] = s[6] > 0 ? s[5] / s[6] : 0.0;
-    row[LAM_MAX] = lmax_all[m];
-    row[FEQ] = s[7];
-    row[XC] = c[3 * m];
-    row[YC] = c[3 * m + 1];
-    row[ZC] = c[3 * m + 2];
-    row[NLEAK] = 0.0;
-    row[NBROKEN] = s[8];
-    row[NLAMELLA] = s[9];
-    row[GLUED_AREA] = s[10];
-    row[NDEBONDED] = row[DEBONDED_AREA] = 0.0;
-    row[MOLECULE] = (double) cells.id(m);
-  }
-
-  // debonded lamella: the per-cell-pair table of fix cell_debonded (identical on every rank;
-  // columns cell i, cell j, bonds, area, ...) counted for both cells of each pair
-  if (debonded && debonded->array_flag)
-    for (int r = 0; r < debonded->size_array_rows; r++)
-      for (int side = 0; side < 2; side++) {
-        const int m = cells.slot((tagint) debonded->compute_array(r, side));
-        if (m < 1) continue;
-        array[m - 1][NDEBONDED] += debonded->compute_array(r, 2);
-        array[m - 1][DEBONDED_AREA] += debonded->compute_array(r, 3);
-      }
-  if (leaks) count_leaks(c);
+// debonded lamella: the per-cell-pair table of fix cell_debonded (identical on every rank;
+// columns cell i, cell j, bonds, area, ...) counted for both cells of each pair
+void ComputeCellProps::add_debonded(Fix *debonded)
+{
+  for (int r = 0; r < debonded->size_array_rows; r++)
+    for (int side = 0; side < 2; side++) {
+      const int m = cells.slot((tagint) debonded->compute_array(r, side));
+      if (m < 1) continue;
+      array[m - 1][NDEBONDED] += debonded->compute_array(r, 2);
+      array[m - 1][DEBONDED_AREA] += debonded->compute_array(r, 3);
+    }
 }
 
 /* ----------------------------------------------------------------------
@@ -348,19 +348,18 @@ void ComputeCellProps::count_leaks(const std::vector<double> &c)
   double **x = atom->x;
   tagint *molecule = atom->molecule;
   std::vector<double> mine;
-  int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;
-    const int m = cells.slot(molecule[anglelist[n][1]]);
-    if (m < 1) continue;
-    mine.push_back((double) m);
-    for (int k = 0; k < 3; k++) {
-      double p[3];
-      for (int d = 0; d < 3; d++) p[d] = x[anglelist[n][k]][d] - c[3 * m + d];
-      CellMech::minimum_image(domain, FLERR, p[0], p[1], p[2]);
-      mine.insert(mine.end(), p, p + 3);
-    }
-  }
+  CellMech::for_each_wall_triangle(neighbor->anglelist, neighbor->nanglelist,
+                                   [&](int, int a, int b, int cc) {
+                                     const int m = cells.slot(molecule[b]);
+                                     if (m < 1) return;
+                                     mine.push_back((double) m);
+                                     for (const int node : {a, b, cc}) {
+                                       double p[3];
+                                       for (int d = 0; d < 3; d++) p[d] = x[node][d] - c[3 * m + d];
+                                       CellMech::minimum_image(domain, FLERR, p[0], p[1], p[2]);
+                                       mine.insert(mine.end(), p, p + 3);
+                                     }
+                                   });
   const std::vector<double> tris = CellMech::allgather_list(mine, MPI_DOUBLE, world);
   const int total = tris.size();
 

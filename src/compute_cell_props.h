@@ -16,6 +16,7 @@ ComputeStyle(cell/props,ComputeCellProps);
 #define LMP_COMPUTE_CELL_PROPS_H
 
 #include "cell_index.h"
+#include "cell_sums.h"
 #include "compute.h"
 
 #include <vector>
@@ -65,10 +66,17 @@ class ComputeCellProps : public Compute {
   class PairCellSPH *sph;
   class BondCellTether *tether;
   class AngleCellMembrane *membrane;    // the wall's membrane elements, if they carry its forces
-  int ialam;    // per-atom lamella area d_alam (tissue), -1 without one
-  int iref;     // per-atom reference positions d2_cellref (rest lengths)
+  int ialam;                            // per-atom lamella area d_alam (tissue), -1 without one
+  int iref;                             // per-atom reference positions d2_cellref (rest lengths)
+
+  CellMech::CellSums sums;    // this call's, per slot
 
   void allocate(int);
+  void relative(int i, int m, const std::vector<double> &c, double *out) const;
+  void add_triangles(const std::vector<double> &c);
+  void add_bonds(const std::vector<double> &c, std::vector<double> &lmax);
+  void fill_row(int m, const CellMech::CellSum &, double lmax, const std::vector<double> &c);
+  void add_debonded(class Fix *);
   void count_leaks(const std::vector<double> &);
 };
 

@@ -18,8 +18,8 @@
 #include "compute_cell_shear_atom.h"
 
 #include "atom.h"
-#include "cell_fields.h"
 #include "cell_physics.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"

@@ -143,6 +143,18 @@ FixCellFailure *FixCellFailure::synced(LAMMPS *lmp, const char *id)
   return fix;
 }
 
+const double *FixCellFailure::synced_counts(LAMMPS *lmp, const char *id)
+{
+  const auto *fix = synced(lmp, id);
+  return fix ? fix->vector_atom : nullptr;
+}
+
+const double *FixCellFailure::built_counts(LAMMPS *lmp, const char *id)
+{
+  const auto *fix = dynamic_cast<FixCellFailure *>(lmp->modify->get_fix_by_id(id));
+  return fix ? fix->vector_atom : nullptr;
+}
+
 /* ----------------------------------------------------------------------
    The distance check counted this build as dangerous if it came in the
    first step it could (ago == max(every, delay)). A failure forced it; the

@@ -36,6 +36,14 @@ class FixCellFailure : public Fix {
   void sync();
   // the failure fix with this ID after a sync(), or null if there is none; collective
   static FixCellFailure *synced(class LAMMPS *lmp, const char *id);
+  // The one way to read the per-atom failure counts (local atoms) of the fix with this ID; null
+  // when there is none. synced_counts syncs first (collective): right at any point, as outputs
+  // need. built_counts does not: they are as of the last neighbor build, which is the present
+  // from the neighbor stage of a step to its force computation (a failure forces the build of
+  // the next step, which applies it), so a per-step reader there (fix cell/fluid's pre_force)
+  // needs no collective call in the steps without failure.
+  static const double *synced_counts(class LAMMPS *lmp, const char *id);
+  static const double *built_counts(class LAMMPS *lmp, const char *id);
 
  protected:
   // gather the pending failures of all ranks and apply them on every rank; true if there were any

@@ -3,6 +3,37 @@
    cellmech: integrates the density and mass of the protoplasm particles:
    continuity (from pair cell/sph) plus osmotic exchange through the cell
    wall (Eqs. 9-10), per cell (molecule ID).
+
+   The fix is the integrator; its equations live in parts of their own,
+   each with one job:
+     cell_water_settings.h  its keywords: Pi, Lp, per cell, solutes, outside
+     cell_sums.h            the sums per cell (shared with compute cell/props)
+     cell_water.h           the potentials per cell (Eqs. W1-W2) and the
+                            outside through the exposed wall (Eqs. 10, W4)
+     cell_wall_triangles.h  the wall triangles: cell, rest area, outside
+     cell_exposed.h         the triangles that face the outside (W4)
+     cell_exchange.h        water between glued cells (Eqs. W2-W3)
+     cell_uptake.h          each cell's uptake and W0, across runs and
+                            restart files
+
+   Separate fixes (solutes, exchange, outside) registering with a
+   coordinator, as in LAMMPS's RHEO package (fix rheo/pressure,
+   rheo/viscosity and rheo/thermal find fix rheo in init, flag themselves
+   to it in setup_pre_force and then each runs its own pre_force, in the
+   order of the input script; fix rheo refuses to come after them): not
+   recommended now. They would buy nothing users ask for -- the keywords
+   already switch each part on and off, and fix_modify changes them
+   between runs -- and would cost what one fix gives for free: every part
+   reads the same per-cell sums and potentials of one step and adds to one
+   mass step per particle, outside then exchange, and conservation of mass
+   to round-off and the bit-identical results depend on that order. If a
+   need appears (another outside boundary, a solute model to swap), this
+   fix should stay the coordinator and call the registered parts itself,
+   each adding its per-cell uptake through one call as
+   CellExchange::add_uptake does now, rather than let each part run its
+   own pre_force as RHEO's do: then the coordinator, not the order of the
+   input script, fixes the order of the terms, and it keeps the sums, the
+   step and the restart record in one place.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -14,11 +45,15 @@ FixStyle(cell/fluid,FixCellFluid);
 #ifndef LMP_FIX_CELL_FLUID_H
 #define LMP_FIX_CELL_FLUID_H
 
+#include "cell_exchange.h"
 #include "cell_index.h"
+#include "cell_sums.h"
+#include "cell_uptake.h"
+#include "cell_wall_triangles.h"
+#include "cell_water.h"
+#include "cell_water_settings.h"
 #include "fix.h"
 
-#include <map>
-#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -26,7 +61,6 @@ namespace LAMMPS_NS {
 class FixCellFluid : public Fix {
  public:
   FixCellFluid(class LAMMPS *, int, char **);
-  ~FixCellFluid() override;
   int setmask() override;
   void init() override;
   void setup_pre_force(int) override;
@@ -44,54 +78,32 @@ class FixCellFluid : public Fix {
   void unpack_reverse_comm(int, int *, double *) override;
 
  protected:
-  double Pi, Lp;    // of every cell without a per-cell setting
-  std::map<LAMMPS_NS::tagint, std::pair<double, double>> percell;    // molecule ID -> (Pi, Lp)
-  int solute;          // 1: Pi W of each cell stays Pi0 W0 (Eq. W1)
-  int exchange;        // 1: water crosses the glued walls between cells (Eq. W3)
-  int external;        // EXT_PSI: exposed walls exchange with psi_ext; EXT_FLUX: lose a set flux
-  double ext_value;    // psi_ext or the flux per area
-  int expose;          // with exchange: EXPOSE_OUTSIDE (neither glued nor faced) or EXPOSE_UNGLUED
-  double expose_depth;    // EXPOSE_OUTSIDE: how far in front another cell's wall hides a triangle
-  double dt;              // step of the level where the SPH forces are
+  CellMech::WaterSettings settings;
+  CellMech::UptakeBooks books;
+  CellMech::CellIndex cells;    // slots 1..ncells
+  CellMech::CellSums sums;      // this step's, per slot
+  CellMech::CellWater water;    // this step's potentials, per slot
+  CellMech::CellExchange exchange;
+  CellMech::WallTriangles triangles;
+  int ncells;
+  double dt;    // step of the level where the SPH forces are
   int ilevel_respa;
-  int ncells;    // number of cells, in slots 1..ncells of cells
-  CellMech::CellIndex cells;
-  double *area, *nfluid;            // per cell, current wall area and fluid count
-  double *nbroken;                  // per cell, broken tethers: its wall is open
-  double *flux_local, *flux_all;    // per cell, mass added by osmosis since the fix was defined
-  std::map<LAMMPS_NS::tagint, double> flux_restart;    // by molecule ID, from a restart file
-  int flux_stale;
   class PairCellSPH *sph;
-  // per cell (slots), the same on every rank: Pi0 and Lp of the cell, the water W0 when the fix
-  // started (Eq. W1), and this step's water, osmotic and water potentials, exposed and glued area
-  std::vector<double> pi0, lp, water0, water, pinow, psi, exposed, glued;
-  std::vector<double> open_area;    // per cell (slots): area of its triangles that face the outside
-  std::vector<double> aref, sump, sumstiff, sumrho;    // rest wall area, sums over the fluid
-  // per entry of neighbor->anglelist since the last build: the cell slot of the triangle and its
-  // rest area (cell_geometry); the timestep of the build they were found for
-  bigint tri_build = -1;
-  std::vector<int> tri_slot;
-  std::vector<double> tri_aref;
-  std::vector<char> tri_open;        // EXPOSE_OUTSIDE: the triangle faces the outside
+  int iref, ialam;                   // d2_cellref and d_alam
   std::vector<double> node_glued;    // per local and ghost atom: its intact lamella bonds
-  std::map<LAMMPS_NS::tagint, double> water0_restart;
-  int iref, ialam;    // d2_cellref and d_alam
 
-  int parse_keyword(int, char **);
-  int parse_one(int, char **);
-  void index_cells();
+  void parse_command(int, char **);
+  void find_styles();
+  void check_respa();
+  void widen_ghost_cutoff();
   void check_group();
-  void cell_geometry();
-  void find_open_triangles();
   void check_walls();
-  void cell_water();
-  void glued_pairs(std::vector<double> &);
-  double potential_stiffness(int) const;
-  bool active() const;
-  std::vector<double> pairs;    // this step's glued pairs: slot a, slot b, glued rest area
-  std::map<std::string, std::string> given;    // fix command: keyword -> its words, once each
-  bool in_command = true;                      // parsing the fix command (not fix_modify)
-  bool depth_given = false;                    // exposed outside D given (no default in units lj)
+  void check_cell_settings();
+  void index_cells();
+  void measure_cells();
+  void find_open_triangles();
+  void update_potentials();
+  void advance_fluid(bool osmosis, const std::vector<double> &uptake);
 };
 
 }    // namespace LAMMPS_NS

@@ -8,7 +8,7 @@
    at the neighbor build of the next step, or earlier for an output), each
    rank
    - takes the two nodes out of each other's 1-2 special list (the same
-     code as for a broken tether, FixCellTetherBreak::remove_special12);
+     code as for a broken tether, CellMech::remove_special12);
      after that build the nodes of the two cells are an ordinary contact
      pair that the 8-4 repulsion keeps apart: a debonded interface still
      resists interpenetration, it only lost its tensile strength. A lamella
@@ -27,9 +27,9 @@
 
 #include "atom.h"
 #include "cell_mpi.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_cell_tether_break.h"
 #include "memory.h"
 #include "update.h"
 
@@ -193,7 +193,7 @@ void FixCellLamellaBreak::apply(const std::vector<Event> &events)
       const int i = atom->map(side ? e.tag2 : e.tag1);
       if (i < 0 || i >= nlocal) continue;
       ndebond[i] += 1.0;
-      FixCellTetherBreak::remove_special12(atom, i, side ? e.tag1 : e.tag2);
+      CellMech::remove_special12(atom, i, side ? e.tag1 : e.tag2);
     }
     const auto key = std::make_pair(std::min(e.mol1, e.mol2), std::max(e.mol1, e.mol2));
     auto it = table.find(key);

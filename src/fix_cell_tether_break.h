@@ -39,12 +39,6 @@ class FixCellTetherBreak : public FixCellFailure {
   void tether_broke(tagint a, tagint b);
   // a wall triangle failed on this rank (angle style cell/membrane); it has left the angle list
   void triangle_failed(tagint a, tagint b, tagint c);
-  // drop the atom with tag other from the 1-2 special list of local atom i (also used for
-  // debonded lamella bonds, fix CELL_LAMELLA_BREAK); false when it is not a 1-2 neighbour
-  static bool remove_special12(class Atom *atom, int i, tagint other);
-  // drop the bond to partner from atom i's bond arrays (the last bond takes its slot); false
-  // when atom i stores no such bond
-  static bool remove_bond(class Atom *atom, int i, tagint partner);
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -65,11 +59,6 @@ class FixCellTetherBreak : public FixCellFailure {
   // failed wall triangles (tags sorted within each)
   void apply(const std::vector<std::pair<tagint, tagint>> &pairs);
   void apply_triangles(const std::vector<std::array<tagint, 3>> &triangles);
-
-  // take the triangles for which is_gone(tag1, tag2, tag3) holds out of the topology
-  template <typename Pred> void remove_triangles(Pred is_gone);
-  // the nodes of each edge leave each other's 1-2 list (and with bonds, the bond arrays)
-  void release_edges(const std::vector<std::pair<tagint, tagint>> &edges, bool bonds);
 };
 
 }    // namespace LAMMPS_NS

@@ -26,6 +26,7 @@
 #include "atom.h"
 #include "cell_fields.h"
 #include "cell_physics.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -108,8 +109,8 @@ void FixCellVTK::write()
   int *mask = atom->mask;
 
   // points: id, molecule, unwrapped position, displacement from the reference, broken tethers
-  auto *broken = FixCellFailure::synced(lmp, FixCellTetherBreak::ID);
-  auto *debonded = FixCellFailure::synced(lmp, FixCellLamellaBreak::ID);
+  const double *nbroken = FixCellFailure::synced_counts(lmp, FixCellTetherBreak::ID);
+  const double *ndebonded = FixCellFailure::synced_counts(lmp, FixCellLamellaBreak::ID);
   const CellMech::WallNodes is_wall(lmp);
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -118,37 +119,35 @@ void FixCellVTK::write()
     domain->unmap(x[i], atom->image[i], xu);
     mine.insert(mine.end(),
                 {(double) tag[i], (double) molecule[i], xu[0], xu[1], xu[2], xu[0] - ref[i][0],
-                 xu[1] - ref[i][1], xu[2] - ref[i][2], broken ? broken->vector_atom[i] : 0.0,
-                 debonded ? debonded->vector_atom[i] : 0.0});
+                 xu[1] - ref[i][1], xu[2] - ref[i][2], nbroken ? nbroken[i] : 0.0,
+                 ndebonded ? ndebonded[i] : 0.0});
   }
   // triangles: three IDs, molecule, area strain, largest tether stretch (a broken tether has
   // taken its triangles out of the topology: the crack is a hole in the surface). Their order
   // gives the outward normal and their central node the group (contract: cell_fields.h).
   std::vector<double> tris;
-  int **anglelist = neighbor->anglelist;
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    // a triangle taken out of the wall in this step is still listed until the next neighbor build
-    if (anglelist[n][3] <= 0) continue;
-    const int v[3] = {anglelist[n][0], anglelist[n][1], anglelist[n][2]};
-    if (!(mask[v[1]] & groupbit)) continue;
-    double e[3][3], e0[3][3], stretch = 0.0;
-    for (int k = 0; k < 3; k++) {
-      const int a = v[k], b = v[(k + 1) % 3];
-      double len = 0.0, len0 = 0.0;
-      for (int d = 0; d < 3; d++) {
-        e[k][d] = x[b][d] - x[a][d];
-        e0[k][d] = ref[b][d] - ref[a][d];
-        len += e[k][d] * e[k][d];
-        len0 += e0[k][d] * e0[k][d];
-      }
-      stretch = MAX(stretch, sqrt(len / len0));
-    }
-    const double strain =
-        CellPhysics::triangle_area(e[0], e[1]) / CellPhysics::triangle_area(e0[0], e0[1]) - 1.0;
-    tris.insert(tris.end(),
-                {(double) tag[v[0]], (double) tag[v[1]], (double) tag[v[2]],
-                 (double) molecule[v[1]], strain, stretch});
-  }
+  CellMech::for_each_wall_triangle(
+      neighbor->anglelist, neighbor->nanglelist, [&](int, int a, int b, int c) {
+        const int v[3] = {a, b, c};
+        if (!(mask[v[1]] & groupbit)) return;
+        double e[3][3], e0[3][3], stretch = 0.0;
+        for (int k = 0; k < 3; k++) {
+          const int a = v[k], b = v[(k + 1) % 3];
+          double len = 0.0, len0 = 0.0;
+          for (int d = 0; d < 3; d++) {
+            e[k][d] = x[b][d] - x[a][d];
+            e0[k][d] = ref[b][d] - ref[a][d];
+            len += e[k][d] * e[k][d];
+            len0 += e0[k][d] * e0[k][d];
+          }
+          stretch = MAX(stretch, sqrt(len / len0));
+        }
+        const double strain =
+            CellPhysics::triangle_area(e[0], e[1]) / CellPhysics::triangle_area(e0[0], e0[1]) - 1.0;
+        tris.insert(tris.end(),
+                    {(double) tag[v[0]], (double) tag[v[1]], (double) tag[v[2]],
+                     (double) molecule[v[1]], strain, stretch});
+      });
 
   auto gather = [&](std::vector<double> &local) {
     int n = local.size();

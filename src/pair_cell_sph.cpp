@@ -27,6 +27,7 @@
 
 #include "atom.h"
 #include "cell_physics.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"

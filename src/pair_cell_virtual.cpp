@@ -26,6 +26,7 @@
 #include "atom.h"
 #include "atom_vec.h"
 #include "cell_physics.h"
+#include "cell_topology.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -54,115 +55,120 @@ PairCellVirtual::PairCellVirtual(LAMMPS *_lmp) : PairCellLJ84(_lmp, "cell/virtua
 void PairCellVirtual::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  const int nlocal = atom->nlocal;
+  // the setup of a run, with the triangle list and the ghost nodes in place
+  if (update->setupflag) check_contact_distance();
+  CellMech::for_each_wall_triangle(
+      neighbor->anglelist, neighbor->nanglelist, [&](int, int a, int b, int c) {
+        if (b >= nlocal) return;    // only with newton_bond off; init_style forbids it
+        repel_fluid(a, b, c, eflag);
+      });
+  if (vflag_fdotr) virial_fdotr_compute();
+}
 
+// the virtual particle at B must be within reach of the central node b, in whose neighbour list
+// the fluid near it is looked for
+void PairCellVirtual::check_reach(int a, int b, int c, const double *B)
+{
+  double **x = atom->x;
+  const double ox = B[0] - x[b][0], oy = B[1] - x[b][1], oz = B[2] - x[b][2];
+  if (!(ox * ox + oy * oy + oz * oz > reach * reach))
+    return;    // a NaN is no reach problem
+  // a wall that deforms strongly needs a larger reach; a node that jumped more than the skin in
+  // one step means the run blew up, and a larger reach would not help
+  const int nodes[3] = {a, b, c};
+  const auto moved = CellMech::fastest_step(lmp, nodes, 3);
+  const std::string why = moved.dist > neighbor->skin
+      ? "its " + CellMech::blow_up_advice(lmp, moved)
+      : fmt::format("its nodes moved at most {:.4g} in the last step (neighbor skin {:g}), "
+                    "so the wall is deformed, not blown up: increase reach in pair_style "
+                    "cell/virtual",
+                    moved.dist, neighbor->skin);
+  error->one(FLERR,
+             "Pair style cell/virtual: triangle {}-{}-{} has its barycentre {:.4g} from its "
+             "central node, beyond reach {}; {}",
+             atom->tag[a], atom->tag[b], atom->tag[c], sqrt(ox * ox + oy * oy + oz * oz), reach,
+             why);
+}
+
+// the virtual particle of triangle a-b-c (central node b) repels the fluid in b's neighbour list
+void PairCellVirtual::repel_fluid(int a, int b, int c, int eflag)
+{
   double **x = atom->x;
   double **v = atom->v;
   double **f = atom->f;
   int *type = atom->type;
-  tagint *tag = atom->tag;
-  const int nlocal = atom->nlocal;
-  int **anglelist = neighbor->anglelist;
-  const int nanglelist = neighbor->nanglelist;
-  int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-  const double reachsq = reach * reach;
-  // the setup of a run, with the triangle list and the ghost nodes in place
-  if (update->setupflag) check_contact_distance();
+  double B[3], VB[3];
+  for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+  check_reach(a, b, c, B);
+  const int btype = type[b];
+  if (!listed[btype])
+    error->one(FLERR,
+               "Pair style cell/virtual: triangle {}-{}-{} has its central node {} of type {}, "
+               "which has no cell/virtual coefficients; give them for the wall type and the "
+               "fluid type (pair_coeff WALL FLUID cell/virtual f0 r0 [gamma])",
+               atom->tag[a], atom->tag[b], atom->tag[c], atom->tag[b], btype);
+  int *jlist = list->firstneigh[b];
+  const int jnum = list->numneigh[b];
+  bool have_vb = false;
 
-  for (int n = 0; n < nanglelist; n++) {
-    if (anglelist[n][3] <= 0) continue;    // triangle of a broken wall carries no virtual particle
-    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
-    if (b >= nlocal) continue;    // only with newton_bond off; init_style forbids it
-    double B[3], VB[3];
-    for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
-    const double ox = B[0] - x[b][0], oy = B[1] - x[b][1], oz = B[2] - x[b][2];
-    if (ox * ox + oy * oy + oz * oz > reachsq) {
-      // a wall that deforms strongly needs a larger reach; a node that jumped more than the
-      // skin in one step means the run blew up, and a larger reach would not help
-      const int nodes[3] = {a, b, c};
-      const auto moved = CellMech::fastest_step(lmp, nodes, 3);
-      const std::string why = moved.dist > neighbor->skin
-          ? "its " + CellMech::blow_up_advice(lmp, moved)
-          : fmt::format("its nodes moved at most {:.4g} in the last step (neighbor skin {:g}), "
-                        "so the wall is deformed, not blown up: increase reach in pair_style "
-                        "cell/virtual",
-                        moved.dist, neighbor->skin);
-      error->one(FLERR,
-                 "Pair style cell/virtual: triangle {}-{}-{} has its barycentre {:.4g} from its "
-                 "central node, beyond reach {}; {}",
-                 tag[a], tag[b], tag[c], sqrt(ox * ox + oy * oy + oz * oz), reach, why);
+  for (int jj = 0; jj < jnum; jj++) {
+    const int k = jlist[jj] & NEIGHMASK;
+    const int ktype = type[k];
+    if (!setflag[btype][ktype] && !setflag[ktype][btype]) continue;
+    const double dx = x[k][0] - B[0];
+    const double dy = x[k][1] - B[1];
+    const double dz = x[k][2] - B[2];
+    const double rsq = dx * dx + dy * dy + dz * dz;
+    const double r0bk = r0[btype][ktype];
+    if (rsq >= r0bk * r0bk) continue;
+    // the virtual particle's velocity only where fluid touches it: most triangles have none,
+    // and its three divisions are a fair part of a triangle's cost
+    if (!have_vb) {
+      for (int d = 0; d < 3; d++) VB[d] = (v[a][d] + v[b][d] + v[c][d]) / 3.0;
+      have_vb = true;
     }
-    const int btype = type[b];
-    if (!listed[btype])
-      error->one(FLERR,
-                 "Pair style cell/virtual: triangle {}-{}-{} has its central node {} of type {}, "
-                 "which has no cell/virtual coefficients; give them for the wall type and the "
-                 "fluid type (pair_coeff WALL FLUID cell/virtual f0 r0 [gamma])",
-                 tag[a], tag[b], tag[c], tag[b], btype);
-    int *jlist = firstneigh[b];
-    const int jnum = numneigh[b];
-    bool have_vb = false;
 
-    for (int jj = 0; jj < jnum; jj++) {
-      const int k = jlist[jj] & NEIGHMASK;
-      const int ktype = type[k];
-      if (!setflag[btype][ktype] && !setflag[ktype][btype]) continue;
-      const double dx = x[k][0] - B[0];
-      const double dy = x[k][1] - B[1];
-      const double dz = x[k][2] - B[2];
-      const double rsq = dx * dx + dy * dy + dz * dz;
-      const double r0bk = r0[btype][ktype];
-      if (rsq >= r0bk * r0bk) continue;
-      // the virtual particle's velocity only where fluid touches it: most triangles have none,
-      // and its three divisions are a fair part of a triangle's cost
-      if (!have_vb) {
-        for (int d = 0; d < 3; d++) VB[d] = (v[a][d] + v[b][d] + v[c][d]) / 3.0;
-        have_vb = true;
+    double fpair = repulsion84_fpair(f0[btype][ktype], r0bk, rsq);
+    if (gamma[btype][ktype] > 0.0) {
+      const double dot = dx * (v[k][0] - VB[0]) + dy * (v[k][1] - VB[1]) + dz * (v[k][2] - VB[2]);
+      fpair += damping_fpair(gamma[btype][ktype], dot, rsq);
+    }
+    const double fx = fpair * dx, fy = fpair * dy, fz = fpair * dz;
+    f[k][0] += fx;
+    f[k][1] += fy;
+    f[k][2] += fz;
+    for (int node : {a, b, c}) {
+      f[node][0] -= fx / 3.0;
+      f[node][1] -= fy / 3.0;
+      f[node][2] -= fz / 3.0;
+    }
+    if (eflag) {
+      const double e = repulsion84_energy(f0[btype][ktype], r0bk, rsq);
+      if (eflag_global) eng_vdwl += e;
+      if (eflag_atom) {
+        eatom[k] += 0.5 * e;
+        for (int node : {a, b, c}) eatom[node] += e / 6.0;
       }
-
-      double fpair = repulsion84_fpair(f0[btype][ktype], r0bk, rsq);
-      if (gamma[btype][ktype] > 0.0) {
-        const double dot = dx * (v[k][0] - VB[0]) + dy * (v[k][1] - VB[1]) + dz * (v[k][2] - VB[2]);
-        fpair += damping_fpair(gamma[btype][ktype], dot, rsq);
+    }
+    if (vflag_atom) {
+      // the interaction's virial (x_k - B) F_k, split as its energy: half to the fluid
+      // particle, a sixth to each node (sums to the global virial)
+      const double vv[6] = {dx * fx, dy * fy, dz * fz, dx * fy, dx * fz, dy * fz};
+      for (int q = 0; q < 6; q++) {
+        vatom[k][q] += 0.5 * vv[q];
+        for (int node : {a, b, c}) vatom[node][q] += vv[q] / 6.0;
       }
-      const double fx = fpair * dx, fy = fpair * dy, fz = fpair * dz;
-      f[k][0] += fx;
-      f[k][1] += fy;
-      f[k][2] += fz;
-      for (int node : {a, b, c}) {
-        f[node][0] -= fx / 3.0;
-        f[node][1] -= fy / 3.0;
-        f[node][2] -= fz / 3.0;
-      }
-      if (eflag) {
-        const double e = repulsion84_energy(f0[btype][ktype], r0bk, rsq);
-        if (eflag_global) eng_vdwl += e;
-        if (eflag_atom) {
-          eatom[k] += 0.5 * e;
-          for (int node : {a, b, c}) eatom[node] += e / 6.0;
-        }
-      }
-      if (vflag_atom) {
-        // the interaction's virial (x_k - B) F_k, split as its energy: half to the fluid
-        // particle, a sixth to each node (sums to the global virial)
-        const double vv[6] = {dx * fx, dy * fy, dz * fz, dx * fy, dx * fz, dy * fz};
-        for (int q = 0; q < 6; q++) {
-          vatom[k][q] += 0.5 * vv[q];
-          for (int node : {a, b, c}) vatom[node][q] += vv[q] / 6.0;
-        }
-      }
-      if (vflag_global && !vflag_fdotr) {
-        virial[0] += dx * fx;
-        virial[1] += dy * fy;
-        virial[2] += dz * fz;
-        virial[3] += dx * fy;
-        virial[4] += dx * fz;
-        virial[5] += dy * fz;
-      }
+    }
+    if (vflag_global && !vflag_fdotr) {
+      virial[0] += dx * fx;
+      virial[1] += dy * fy;
+      virial[2] += dz * fz;
+      virial[3] += dx * fy;
+      virial[4] += dx * fz;
+      virial[5] += dy * fz;
     }
   }
-
-  if (vflag_fdotr) virial_fdotr_compute();
 }
 
 /* ----------------------------------------------------------------------
@@ -181,19 +187,18 @@ void PairCellVirtual::check_contact_distance()
   const int ntypes = atom->ntypes;
   double **x = atom->x;
   const int *type = atom->type;
-  int **anglelist = neighbor->anglelist;
   // per type: sum and count of triangle edges of central nodes of that type, atoms of that type
   std::vector<double> local(3 * (ntypes + 1), 0.0), all(3 * (ntypes + 1));
   auto dist = [&](int i, int j) {
     const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
     return sqrt(dx * dx + dy * dy + dz * dz);
   };
-  for (int n = 0; n < neighbor->nanglelist; n++) {
-    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
-    if (anglelist[n][3] <= 0 || b >= atom->nlocal) continue;
-    local[type[b]] += dist(a, b) + dist(b, c) + dist(a, c);
-    local[ntypes + 1 + type[b]] += 3.0;
-  }
+  CellMech::for_each_wall_triangle(neighbor->anglelist, neighbor->nanglelist,
+                                   [&](int, int a, int b, int c) {
+                                     if (b >= atom->nlocal) return;
+                                     local[type[b]] += dist(a, b) + dist(b, c) + dist(a, c);
+                                     local[ntypes + 1 + type[b]] += 3.0;
+                                   });
   for (int i = 0; i < atom->nlocal; i++) local[2 * (ntypes + 1) + type[i]] += 1.0;
   MPI_Allreduce(local.data(), all.data(), 3 * (ntypes + 1), MPI_DOUBLE, MPI_SUM, world);
   for (int w = 1; w <= ntypes; w++) {

@@ -39,6 +39,8 @@ class PairCellVirtual : public PairCellLJ84 {
   // r0 must be at least this fraction of the wall's mean triangle edge (check_contact_distance)
   static constexpr double MIN_R0_EDGE = 0.5;
   void check_contact_distance();
+  void repel_fluid(int a, int b, int c, int eflag);
+  void check_reach(int a, int b, int c, const double *B);
 };
 
 }    // namespace LAMMPS_NS

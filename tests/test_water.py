@@ -7,7 +7,8 @@ cells (cellgen.py tissue 1x1x2, level 3, 440 fluid particles each), short runs.
    stays constant to round-off, what one cell takes up the other loses, each cell's mass changes by
    its uptake (fix vector), and the gap of the water potentials closes.
 2. Same on 2 MPI ranks (equal to 1 rank to round-off), and split by a restart: the solutes kept
-   (solute yes), Pi W stays Pi0 W0 with the W0 of the first run through the restart.
+   (solute yes), Pi W stays Pi0 W0 with the W0 of the first run through the restart; a restart
+   record of the fix in an older format is refused with an error naming the fix.
 3. No exchange across a wall that is not shared (the lamella bonds deleted) or open (a tether of
    cell 1 broken by a low critical stretch): the uptakes stop exactly.
 4. Drying at a set flux q through the exposed wall only: each cell loses q dt times the sum of its
@@ -18,6 +19,7 @@ cells (cellgen.py tissue 1x1x2, level 3, 440 fluid particles each), short runs.
 """
 import json
 import os
+import struct
 
 import numpy as np
 
@@ -164,6 +166,22 @@ def mpi_restart(d, special):
             f"W0 {b['Z1'][0]:.10g} vs {one['Z1'][0]:.10g}")
 
 
+def old_restart(d, special):
+    """A restart record of fix cell/fluid in a format before RESTART_TAG (no release wrote one;
+    development versions opened it with -ncells) is refused by name, not read as garbage."""
+    data = open(os.path.join(d, "sol.restart"), "rb").read()
+    at = data.index(struct.pack("<d", -0.5), data.index(b"cell/fluid\0"))
+    with open(os.path.join(d, "old.restart"), "wb") as f:
+        f.write(data[:at] + struct.pack("<d", -2.0) + data[at + 8:])
+    rc, log = T.lmp(script(special, EXCHANGE + " solute yes", 1, 1, "old.dat", restart="old.restart",
+                           run="run 0\n"), cwd=d, check=False, log="log.old",
+                    variables=dict(COARSE, dir=T.INPUTS))
+    err = [l for l in log.splitlines() if "ERROR" in l]
+    print(f"restart of an older format: rc {rc}: {err[0] if err else 'no error'}")
+    T.check("restart of an older format refused, naming fix cell/fluid",
+            rc != 0 and err and "Fix cell/fluid w" in err[0] and "older format" in err[0])
+
+
 def no_exchange(d, special):
     # not shared: the lamella bonds (type 2) deleted, the cells still side by side
     _, r = run(d, special, EXCHANGE + " exposed unglued", 300, 100, "unglued",
@@ -267,6 +285,7 @@ def main():
     special = json.load(open(os.path.join(d, "two.json")))["extra_special_per_atom"]
     exchange_balance(d, special)
     mpi_restart(d, special)
+    old_restart(d, special)
     no_exchange(d, special)
     drying(d, special)
     bad_inputs(d, special)

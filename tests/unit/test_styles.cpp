@@ -3,6 +3,8 @@
 // LAMMPS error that names the command and what was expected, and the plugin guard.
 #include "atom.h"
 #include "bond.h"
+#include "cell_mpi.h"
+#include "cell_topology.h"
 #include "compute.h"
 #include "exceptions.h"
 #include "fix.h"
@@ -19,6 +21,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <regex>
 #include <string>
 #include <vector>
@@ -849,6 +852,49 @@ TEST(PluginGuard, RefusesForeignLammps)
     EXPECT_NE(std::string(e.what()).find("Unrecognized bond style"), std::string::npos);
   }
   delete l;
+}
+
+// the cell-topology module (cell_topology.h, cell_mpi.h): header code, no LAMMPS instance
+TEST(Topology, SameCellByMoleculeId)
+{
+  const tagint molecule[3] = {7, 7, 9};
+  EXPECT_TRUE(CellMech::same_cell(molecule, 0, 1));
+  EXPECT_FALSE(CellMech::same_cell(molecule, 1, 2));
+  // without molecule IDs all particles are one body of fluid
+  EXPECT_TRUE(CellMech::same_cell(nullptr, 1, 2));
+}
+
+TEST(Topology, WallTrianglesSkipTheRemovedOnes)
+{
+  int rows[3][4] = {{0, 1, 2, 1}, {1, 2, 3, 0}, {2, 3, 4, -1}};
+  int row3[4] = {3, 4, 5, 2};
+  int *anglelist[4] = {rows[0], rows[1], rows[2], row3};
+  std::vector<std::vector<int>> seen;
+  CellMech::for_each_wall_triangle(anglelist, 4, [&](int n, int a, int b, int c) {
+    seen.push_back({n, a, b, c});
+  });
+  EXPECT_EQ(seen, (std::vector<std::vector<int>>{{0, 0, 1, 2}, {3, 3, 4, 5}}));
+}
+
+TEST(Topology, PairSumsKeepTheIdsAndAddUp)
+{
+  // the largest IDs a tagint holds come back exactly (they were cast to int, or sent as doubles)
+  const tagint big = std::numeric_limits<tagint>::max(), other = big - 1;
+  CellMech::PairSums<2> sums;
+  sums(big, other)[0] += 1.0;
+  sums(other, big)[1] += 0.5;    // the same pair, either order
+  sums(3, 2)[0] += 2.0;
+  const auto all = sums.summed(MPI_COMM_WORLD).all();
+  int nprocs;
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+  ASSERT_EQ(all.size(), 2u);
+  auto it = all.begin();
+  EXPECT_EQ(it->first, CellMech::PairSums<2>::Key(2, 3));
+  EXPECT_EQ(it->second[0], 2.0 * nprocs);
+  ++it;
+  EXPECT_EQ(it->first, CellMech::PairSums<2>::Key(other, big));
+  EXPECT_EQ(it->second[0], 1.0 * nprocs);
+  EXPECT_EQ(it->second[1], 0.5 * nprocs);
 }
 
 }    // namespace
