@@ -67,9 +67,20 @@ def test_a_run_stopped_by_an_error_is_named_with_where_it_stopped(tmp_path):
         d = tmp_path / f"compress-100-weak-{speed:g}"
         d.mkdir()
         np.savetxt(d / "tissue-compress.dat", rows[: 11 if speed == 0.25 else 21])
-        (d / "log.lammps").write_text("run 1000\nERROR on proc 0: Bond style cell/tether: atom 7 moved\n"
-                                      if speed == 0.25 else "run 1000\nTotal wall time: 0:01:00\n")
+        # the slow run blew up inside its run; the fast one ended its run, then met a bad input line
+        run = "Per MPI rank memory allocation (min/avg/max) = 20 | 20 | 20 Mbytes\n"
+        (d / "log.lammps").write_text(run + ("ERROR on proc 0: Bond style cell/tether: atom 7 moved\n"
+                                             if speed == 0.25 else
+                                             "Loop time of 60 on 1 procs\nERROR: Unknown command: rea\n"))
     v, slow, fast, notes = C.load_runs(str(tmp_path))[-100, "weak"]
     assert v == 0.25 and len(notes) == 1
     assert notes[0].startswith("the run at 0.25 m/s stopped at 5.0% strain: ERROR on proc 0: Bond style")
     assert "Stopped early" in C.stopped_text({(-100, "weak"): {"notes": notes}})
+
+
+def test_a_block_burst_before_loading_gives_no_failure_stress():
+    e = np.linspace(0.0, 0.1, 201)
+    burst = record(e, 100.0 * e)
+    burst["broken_tethers"] = np.where(e > 0.005, 40.0, 0.0)     # walls broken at 0.5% strain
+    m = C.measure(burst, burst)
+    assert m["burst"] and not m["failure_converged"] and "burst before loading" in C.table({(-600, "weak"): dict(m, v=0.25)})

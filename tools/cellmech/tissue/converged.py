@@ -88,10 +88,14 @@ def measure(slow, fast):
     start = converged_from(bal, rate)
     # a modulus only of the intact block: its window ends before the first rupture
     intact = MODULUS_WINDOW[1] <= hi
-    # the failure has converged when both speeds first rupture (or first debond) within 1% strain
+    # the failure has converged when both speeds first rupture (or first debond) within 1% strain;
+    # a wall that ruptured before FROM burst under its own turgor (at the inflation or the plates'
+    # first touch): that is no compression failure, and its peak no failure stress
     first = [min(g["first"].values()) if g["first"] else end for g in (f, ff)]
+    burst = f["first"].get("wall rupture", end) < FROM
     return dict(P0=float(slow["P_mean_kPa"][0]), E=modulus(slow, *MODULUS_WINDOW) if intact else float("nan"),
-                fail=f, fail_fast=ff, failure_converged=abs(first[0] - first[1]) <= 0.01,
+                fail=f, fail_fast=ff, failure_converged=not burst and abs(first[0] - first[1]) <= 0.01,
+                burst=burst,
                 balance=v.numbers.get("balance"), ke=v.numbers.get("ke_over_work"), rate=worst,
                 start=start, judged=(FROM, hi),
                 converged=intact and start is not None and start <= MODULUS_WINDOW[0],
@@ -101,13 +105,20 @@ def measure(slow, fast):
 
 def stopped(folder):
     """The error that stopped a run early (its log's first ERROR line, cut short), or None: a run
-    that blew up past its first rupture keeps its record up to there, and the report says so."""
+    that blew up past its first rupture keeps its record up to there, and the report says so. Only
+    an error inside a run counts: after the setup of the log's last run (LAMMPS's "Per MPI rank
+    memory" line) and before its end ("Loop time"); one after the last run ended stopped nothing."""
     try:
         with open(f"{folder}/log.lammps") as f:
-            err = next((line.strip() for line in f if line.startswith("ERROR")), None)
+            lines = f.read().splitlines()
     except OSError:
         return None
-    return err[:90] + "..." if err and len(err) > 90 else err
+    err = next((line.strip() for line in lines if line.startswith("ERROR")), None)
+    last = {key: max((k for k, line in enumerate(lines) if line.startswith(key)), default=-1)
+            for key in ("Per MPI rank memory", "Loop time of")}
+    if err is None or last["Loop time of"] > last["Per MPI rank memory"]:
+        return None
+    return err[:90] + "..." if len(err) > 90 else err
 
 
 def load_runs(runs):
@@ -151,6 +162,11 @@ def pct(x):
     return "-" if x is None or not np.isfinite(x) else f"{x:.1%}"
 
 
+def judged(m):
+    lo, hi = m["judged"]
+    return f"{lo:.0%}-{hi:.1%}" if hi > lo else "-"
+
+
 def table(rows):
     head = (f"| Pi (kPa) | lamella | speed v (m/s) | P at start (kPa) | modulus {MODULUS_WINDOW[0]:.0%}-"
             f"{MODULUS_WINDOW[1]:.0%} (kPa) | failure stress (kPa) | strain at peak | first rupture (v; 2v) | "
@@ -160,11 +176,12 @@ def table(rows):
     for (pi, lam), m in rows.items():
         f, ff = m["fail"], m["fail_fast"]
         lines.append(
-            f"| {pi} | {lam} | {m['v']:g} | {m['P0']:.0f} | {fmt(m['E'])} | {fmt(f['peak_kPa'])} | "
-            f"{pct(f['strain_at_peak'])} | {pct(f['first'].get('wall rupture'))}; "
-            f"{pct(ff['first'].get('wall rupture'))} | {pct(f['first'].get('lamella debonding'))} | {f['mode']}"
+            f"| {pi} | {lam} | {m['v']:g} | {m['P0']:.0f} | {fmt(m['E'])} | "
+            f"{'-' if m.get('burst') else fmt(f['peak_kPa'])} | {'-' if m.get('burst') else pct(f['strain_at_peak'])} | {pct(f['first'].get('wall rupture'))}; "
+            f"{pct(ff['first'].get('wall rupture'))} | {pct(f['first'].get('lamella debonding'))} | "
+            f"{'burst before loading' if m.get('burst') else f['mode']}"
             f"{' (stopped early, below)' if m.get('notes') else ''} | "
-            f"{m['judged'][0]:.0%}-{m['judged'][1]:.1%} | {pct(m['balance'])} | {pct(m['ke'])} | {pct(m['rate'])} | "
+            f"{judged(m)} | {pct(m['balance'])} | {pct(m['ke'])} | {pct(m['rate'])} | "
             f"{'-' if m['start'] is None else format(m['start'], '.0%')} |")
     return "\n".join(lines)
 
@@ -183,8 +200,11 @@ def compare(rows):
     peak = [m["fail"]["peak_kPa"] for m in rows.values() if m["failure_converged"]]
     if not E or not peak:
         return ""
-    return (f"The model's modulus, {fmt(min(E))}-{fmt(max(E))} kPa, lies {fmt(1e3 / max(E), 2)}-"
-            f"{fmt(2e4 / min(E), 2)} times below the measured 1-20 MPa, and its failure stress, "
+    # the measured range's low end against the stiffest row, its top against the softest
+    low, top = 1e3 / max(E), 2e4 / min(E)
+    where = (f"lies {fmt(low, 2)}-{fmt(top, 2)} times below the measured 1-20 MPa" if low > 1 else
+             f"reaches the low end of the measured 1-20 MPa and lies up to {fmt(top, 2)} times below its top")
+    return (f"The model's modulus, {fmt(min(E))}-{fmt(max(E))} kPa, {where}, and its failure stress, "
             f"{fmt(min(peak))}-{fmt(max(peak))} kPa, {fmt(300 / max(peak), 2)}-{fmt(300 / min(peak), 2)} "
             f"times below apple's 0.3 MPa (a compression here, mostly tension there).")
 
@@ -203,7 +223,8 @@ def turgor_trend(rows):
 
 
 def mode_trend(rows):
-    return "Model: " + "; ".join(f"Pi {pi} {lam}: {m['fail']['mode']}" for (pi, lam), m in rows.items()) + "."
+    return "Model: " + "; ".join(f"Pi {pi} {lam}: {'burst before loading' if m.get('burst') else m['fail']['mode']}"
+                                 for (pi, lam), m in rows.items()) + "."
 
 
 def block_words(gen):
@@ -225,7 +246,7 @@ def text(rows, info, gen, name):
                f"within 5% of twice the speed in every 2% window from the modulus window on, the block still intact)"
                + (f": {fmt(min(Es))}-{fmt(max(Es))} kPa." if conv else ".")
                + f" The failure converged in {len(fconv)} (the first rupture or debond at both speeds within 1% "
-               f"strain)" + (f": failure stress {fmt(min(peaks))}-{fmt(max(peaks))} kPa." if fconv else "."))
+               f"strain, the walls intact at {FROM:.0%})" + (f": failure stress {fmt(min(peaks))}-{fmt(max(peaks))} kPa." if fconv else "."))
     lit = "\n".join(f"| {a} | {b} | {c} |" for a, b, c in LITERATURE)
     return f"""# Tissue compression at converged plate speeds
 
@@ -247,7 +268,9 @@ strain. *Failure stress*: the peak of the stress over 1% strain windows, with it
 rupture*: at both speeds; where they differ, the failure strain has not converged with the speed
 (the checks end at the earlier one: past it the two curves part by the timing of the events).
 *Failure mode*: which kind of failure begins first, wall rupture (a tether breaks) or lamella
-debonding (a lamella bond lets go). *Judged*: from 2% strain to the first rupture of either run.
+debonding (a lamella bond lets go); *burst before loading*: a wall ruptured before {FROM:.0%} strain,
+under the cell's own turgor (the inflated wall's stretch near the critical 1.04), so the block had
+failed before the plates loaded it, and its row gives no failure stress. *Judged*: from 2% strain to the first rupture of either run.
 *Plates*: the largest (F_top - F_bottom) / mean over 2% windows there; *KE/W*: the largest kinetic
 energy against the plates' work (printed, not judged); *vs 2v*: the largest difference of the
 window-mean plate force between the two speeds. *Converged from*: the strain from which every 2%
@@ -264,7 +287,7 @@ ends).
 What the model gives, and why it differs:
 
 * **Modulus and failure stress.** {compare(rows)} The wall is the paper's stiff single cell's
-  (Table I: G = 800 MPa, thickness 0.126 um, G t0 = 100 N/m) on cells of 48 um, not a wall fitted to
+  (Table I: G = 800 MPa, thickness 0.126 um, G t0 = 100 N/m) on cells of about {gen['volume_mean'] ** (1 / 3):.0f} um, not a wall fitted to
   apple or potato; a block of {gen['cells']} cells with free faces all round is not a bulk tissue
   ({surface(gen)}); and the coarse wall ({gen['wall_nodes_per_cell']} nodes) and fluid (about {np.mean([c['fluid'] for c in gen['cell']]):.0f} particles)
   bound the curve's resolution. These are the model's numbers at this resolution: nothing was tuned
