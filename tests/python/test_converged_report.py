@@ -84,3 +84,9 @@ def test_a_block_burst_before_loading_gives_no_failure_stress():
     burst["broken_tethers"] = np.where(e > 0.005, 40.0, 0.0)     # walls broken at 0.5% strain
     m = C.measure(burst, burst)
     assert m["burst"] and not m["failure_converged"] and "burst before loading" in C.table({(-600, "weak"): dict(m, v=0.25)})
+
+
+def test_a_stress_still_rising_at_the_end_is_no_failure_stress():
+    e = np.linspace(0.0, 0.1, 201)
+    m = C.measure(record(e, 800.0 * e), record(e, 800.0 * e))
+    assert m["rising"] and not m["failure_converged"] and "| > 7" in C.table({(-100, "weak"): dict(m, v=0.25)})
