@@ -16,6 +16,7 @@ import sys
 
 import numpy as np
 
+from .. import params  # noqa: E402
 from . import tissuedata as T  # noqa: E402
 from . import water  # noqa: E402
 
@@ -26,7 +27,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 PIS = (-364, -100)
 LAMS = {"strong": (300.0, 1000.0), "weak": (30.0, 100.0)}  # sigl kPa, Gl pg/us^2
 SPEEDS = (5, 10, 20)
-GC_DEFAULT, SIGL_DEFAULT = 1000.0, 300.0   # tissue-model.lmp defaults, used by the pair
+# the lamella the pair runs with: tissue-model.lmp's defaults, read from there (Gl is its Gc)
+_TISSUE = params.table(os.path.join(params.ROOT, "lammps-inputs", "tissue-model.lmp"))
+GC_DEFAULT, SIGL_DEFAULT = _TISSUE["Gl"], _TISSUE["sigl"]
 WINDOW_US = 1.0        # moving-average window of the plate force, us of plate travel time
 EPS_FIT = (0.01, 0.03)  # strain range of the apparent modulus
 
