@@ -23,7 +23,15 @@ def test_table_is_cell_model_lmp():
         assert str(t[k]) == v or t[k] == float(v)
     # the stiff cell of the paper's Table I, in units micro
     assert (t["G"], t["t0"], t["rho0"], t["c"]) == (8.0e5, 0.126, 1.0, 264.6)
-    assert t["lamlog"] == "debond.log"
+    assert t["wall"] == "tether"
+
+
+def test_the_lamella_is_set_in_tissue_model_lmp_alone():
+    """One source for the middle lamella's settings: tissue-model.lmp (the tissue report reads it)."""
+    cell = params.table()
+    tissue = params.table(os.path.join(ROOT, "lammps-inputs", "tissue-model.lmp"))
+    assert not {"Gl", "gl", "lamlog"} & set(cell)
+    assert (tissue["sigl"], tissue["Gl"], tissue["lamlog"]) == (300.0, 1000.0, "debond.log")
 
 
 def test_table_first_definition_and_overrides_win(tmp_path):
