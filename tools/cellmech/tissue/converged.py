@@ -229,13 +229,21 @@ def mode_trend(rows):
                                  for (pi, lam), m in rows.items()) + "."
 
 
+def fluid_per_cell(gen):
+    return float(np.mean([c["fluid"] for c in gen["cell"]]))
+
+
+def cell_size(gen):
+    """The edge of a cube of the mean cell volume, um."""
+    return gen["volume_mean"] ** (1 / 3)
+
+
 def block_words(gen):
     """The block as the generator made it (gen/block.json), read from the run."""
     n = gen["cells"]
     shape = gen["seeds"].split(",")[0].replace("lattice sc ", "")
-    fluid = np.mean([c["fluid"] for c in gen["cell"]])
     return (f"The coarse {shape} block of {n} cells ({gen['wall_nodes_per_cell']} wall nodes and about "
-            f"{fluid:.0f} fluid particles per cell, cells of about {gen['volume_mean'] ** (1 / 3):.0f} um, "
+            f"{fluid_per_cell(gen):.0f} fluid particles per cell, cells of about {cell_size(gen):.0f} um, "
             f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average)")
 
 
@@ -296,9 +304,9 @@ ends).
 What the model gives, and why it differs:
 
 * **Modulus and failure stress.** {compare(rows)} The wall is the paper's stiff single cell's
-  (Table I: G = 800 MPa, thickness 0.126 um, G t0 = 100 N/m) on cells of about {gen['volume_mean'] ** (1 / 3):.0f} um, not a wall fitted to
+  (Table I: G = 800 MPa, thickness 0.126 um, G t0 = 100 N/m) on cells of about {cell_size(gen):.0f} um, not a wall fitted to
   apple or potato; a block of {gen['cells']} cells with free faces all round is not a bulk tissue
-  ({surface(gen)}); and the coarse wall ({gen['wall_nodes_per_cell']} nodes) and fluid (about {np.mean([c['fluid'] for c in gen['cell']]):.0f} particles)
+  ({surface(gen)}); and the coarse wall ({gen['wall_nodes_per_cell']} nodes) and fluid (about {fluid_per_cell(gen):.0f} particles)
   bound the curve's resolution. These are the model's numbers at this resolution: nothing was tuned
   towards the measurements.
 * **Turgor.** Measured moduli rise with turgor. {turgor_trend(rows)}
