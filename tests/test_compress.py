@@ -19,7 +19,7 @@ Asserted:
  * the cell reaches 20% strain with positive pressure, no fluid leaks, and the main job's CSV
    tables (tools/plot_main.py) hold these outputs.
 
-Why level 4 and not the coarse cell (docs/performance.md, "The compression test's rate check and
+Why level 4 and not the coarse cell (docs/studies/performance.md, "The compression test's rate check and
 round-off"): at level 3 one run's windowed force moves by 2-7% with the cell's microstate, and
 over six microstates the two rates differ by 3.3% +- 1.0% at 14% strain: the coarse cell does not
 meet 2% on average, and which code passed was round-off's choice (2 of 6 microstates did; the

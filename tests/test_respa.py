@@ -28,7 +28,7 @@ The coarse stiff cell, inflated, is pressed by the top plate at 0.5 m/s for 12.8
    (printed), and respa's impulses from the fluid every 3 wall steps shift them by 1-3% (plate
    force -1.2%, equatorial force +2.3% on average). The failure this bound is for is larger: fix
    wall/harmonic on the inner level, its force sampled at the last inner step, read 10% low in
-   this run (22-28% at level 4, docs/performance.md);
+   this run (22-28% at level 4, docs/studies/performance.md);
  * the same with 'hybrid 2 2 2' in place of 'pair 2', and with respa from the run 0 on (the
    fix's setup under respa), to round-off;
  * 2 ranks give the 1-rank run to 1e-4 under respa 3 as under Verlet (ghost velocities);

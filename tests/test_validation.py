@@ -97,7 +97,7 @@ def main():
         within(f"5: {r['name']} vs membrane (2 r0/R)", r, LAYER)
     # the lower turgors are let down from 364 kPa (in.turgor) and settle there: the turgor is set
     # by osmosis (1%, as test_inflate), and the fluid's mass has stopped moving (a cell pumped up
-    # directly to 3 kPa still took in 0.4% per 4 us at level 4, docs/membrane.rst; 1e-3 is a
+    # directly to 3 kPa still took in 0.4% per 4 us at level 4, docs/studies/membrane-wall.rst; 1e-3 is a
     # quarter of that)
     for P in ("300", "30", "3"):
         st = rows(c5, group=f"P{P}-settle")

@@ -101,7 +101,7 @@ def turgid_state(run, rec):
 
 
 # Case 5 for the membrane walls meets the membrane model (tools/membrane.py) on that model's own
-# terms (docs/membrane.rst, "The membrane walls' case 5"):
+# terms (docs/studies/membrane-wall.rst, "The membrane walls' case 5"):
 #   - its sheet carries no compression (the contact disc lies slack on the plate): the
 #     tension-field element, Eq. M3 (-var wrinkle yes);
 #   - its contents have the Tait fluid's compressibility right up to the wall, where the paper's
@@ -115,7 +115,7 @@ def turgid_state(run, rec):
 #     osmosis that holds each at the set turgor, the enclosed volume steady). At level 4 F_eq / (P pi R^2) - 1 goes -1.05% (inflated 20 us),
 #     -0.58% (80 us), -0.49% (320 us), its mass steady to 2e-5 from 80 us on; a 3 kPa cell let
 #     down from the 20-us cell +0.95% after 20 us of settling, +0.12% after 84, -0.20% after 260
-#     (docs/membrane.rst, "Young-Laplace"). Level 3 is steady from 60 us on: inflated 80 us,
+#     (docs/studies/membrane-wall.rst, "Young-Laplace"). Level 3 is steady from 60 us on: inflated 80 us,
 #     settled 100 us (t_inflate, t_settle, us, at every level).
 # The tethers keep the paper's protocol (its contact, 0.5 m/s): they are compared, not judged.
 MEMBRANE_CASE5 = dict(wrinkle="yes", f0_scale=10.0, vplate=0.0625, t_inflate=80.0, t_settle=100.0)

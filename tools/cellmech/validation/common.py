@@ -215,7 +215,7 @@ class Runner:
     def turgid(self, level, P, wall=None, model=None, name="", t_inflate=None, t_settle=None):
         """The stiff cell at turgor P (kPa) as the package makes one (lammps-inputs/in.turgor):
         inflated to the paper's 364 kPa, then brought to P by osmosis. A cell pumped up directly
-        to a low turgor is still taking in water after tens of us (docs/membrane.rst). Returns
+        to a low turgor is still taking in water after tens of us (docs/studies/membrane-wall.rst). Returns
         (restart file, record of its last stage: inflate-*.dat or settle-*.dat, wall nodes,
         fluid particles). t_inflate, t_settle: the stages' times in us (T_INFLATE, T_SETTLE)."""
         restart, infl, nw, nf = self.inflate(level, STIFF["P"], t_us=t_inflate, wall=wall,
