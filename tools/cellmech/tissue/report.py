@@ -25,11 +25,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 PIS = (-364, -100)
-LAMS = {"strong": (300.0, 1000.0), "weak": (30.0, 100.0)}  # sigl kPa, Gl pg/us^2
+LAMS = tuple(params.lamellae())   # the named lamellae: strong, weak
 SPEEDS = (5, 10, 20)
-# the lamella the pair runs with: tissue-model.lmp's defaults, read from there (Gl is its Gc)
-_TISSUE = params.table(os.path.join(params.ROOT, "lammps-inputs", "tissue-model.lmp"))
-GC_DEFAULT, SIGL_DEFAULT = _TISSUE["Gl"], _TISSUE["sigl"]
 WINDOW_US = 1.0        # moving-average window of the plate force, us of plate travel time
 EPS_FIT = (0.01, 0.03)  # strain range of the apparent modulus
 
@@ -70,6 +67,11 @@ class Report:
     def link(self, name):
         return name if self.rel == "." else f"{self.rel}/{name}"
 
+    def settings(self, name, inp, lamella="strong"):
+        """The effective settings of the run in folder name (its settings.json); for a run older
+        than settings.json, the input's defaults with the named lamella tools/tissue.sh gave it."""
+        return params.run_settings(self.p(name), inp, params.lamellae()[lamella])
+
     def ok(self, stage):
         return self.times.get(stage, (0, ""))[1] == "ok"
 
@@ -92,7 +94,8 @@ class Report:
         pr = T.load(self.p("pair/pair-press.dat"), T.PRESS)
         sg = T.load(self.p("single/pair-press.dat"), T.PRESS)
         pl = T.load(self.p("pair/pair-pull.dat"), T.PULL) if os.path.exists(self.p("pair/pair-pull.dat")) else None
-        vplate, gap = 0.5, 0.2   # in.tissue-pair defaults
+        ps = self.settings("pair", "in.tissue-pair")
+        vplate, gap, vpull, Gl, sigl = ps["vplate"], ps["gap"], ps["vpull"], ps["Gl"], ps["sigl"]
         for d in (pr, sg):
             d["approach_um"] = vplate * d["time_us"] - 2 * gap
         T.write_csv(self.fig("pair-press.csv"), pr, ["time_us", "strain", "approach_um"] + T.PRESS[2:],
@@ -184,7 +187,7 @@ class Report:
             A0 = float(pl["glued_area_um2"][0])
             kmax = int(np.argmax(F))
             T.write_csv(self.fig("pair-pull.csv"), pl, T.PULL[:2] + ["F_pull_smoothed_nN"] + T.PULL[2:],
-                        "in.tissue-pair, pull: top grip moves up at 0.5 m/s; F_pull > 0 in tension; smoothed: "
+                        f"in.tissue-pair, pull: top grip moves up at {vpull:g} m/s; F_pull > 0 in tension; smoothed: "
                         f"centred moving average over {npl} samples ({npl * dsep:.3g} um of separation)")
             S["pull_window_samples"] = npl
             S["pull_force_max_raw_nN"] = float(np.max(Fraw))
@@ -194,9 +197,9 @@ class Report:
                      pull_glued_area_start_um2=A0, pull_last_debond_sep_um=float(sep[k_last]),
                      pull_separated=separated, pull_glued_area_end_um2=float(pl["glued_area_um2"][-1]),
                      pull_debonded_bonds_end=int(deb[-1]), pull_lamella_bonds_end=int(pl["lamella_bonds"][-1]),
-                     work_separation_nNum=W, Gc=GC_DEFAULT, sigl_kPa=SIGL_DEFAULT,
-                     GcA_nNum=GC_DEFAULT * A0, W_over_GcA=W / (GC_DEFAULT * A0) if A0 > 0 else None,
-                     sigmaA_nN=SIGL_DEFAULT * A0,
+                     work_separation_nNum=W, Gc=Gl, sigl_kPa=sigl,
+                     GcA_nNum=Gl * A0, W_over_GcA=W / (Gl * A0) if A0 > 0 else None,
+                     sigmaA_nN=sigl * A0,
                      pull_P_end_kPa=[float(pl["P1_kPa"][-1]), float(pl["P2_kPa"][-1])],
                      pull_F_end_nN=float(F[-1]))
             # the first positive pull force: where the cells start to pull on the grip
@@ -213,7 +216,7 @@ class Report:
             ax[0].set_xlabel("grip separation (um)")
             ax[0].set_ylabel("pull force (uN)")
             ax[0].legend(fontsize=8)
-            ax[0].set_title(f"pull at 0.5 m/s; Gc A0 = {GC_DEFAULT * A0 / 1e3:.3g} pJ", fontsize=9)
+            ax[0].set_title(f"pull at {vpull:g} m/s; Gc A0 = {Gl * A0 / 1e3:.3g} pJ", fontsize=9)
             ax[1].plot(sep, pl["glued_area_um2"], label="glued area")
             ax[1].plot(sep, pl["contact_area_um2"], label="contact area")
             ax[1].set_xlabel("grip separation (um)")
@@ -234,11 +237,12 @@ class Report:
         w("## 1. Two glued cells: press and pull", "",
           "`cellgen.py tissue --lattice sc --n 1 1 2` (two cells stacked along z, glued across one face) and "
           "`--n 1 1 1` (one cell of the same equivalent radius, 30 um), each inflated with `in.tissue-inflate` "
-          "(Pi -364 kPa, Lp 10, the steps of run-info.txt), then `in.tissue-pair`: the plates press at 0.5 m/s to 10% "
+          f"(Pi {ps['Pi']:g} kPa, Lp 10, the steps of run-info.txt), then `in.tissue-pair`: the plates press at "
+          f"{vplate:g} m/s to {ps['press']:.0%} "
           "strain (strain = plate travel from first contact / initial height; the pair is twice as high, so at one "
-          "strain it is pressed twice as far); the pair is then gripped (wall nodes within 1 um of a plate) and "
-          "the top grip pulled up at 0.5 m/s. Walls do not rupture (lamf 0); lamella: strength sigl "
-          f"{SIGL_DEFAULT:g} kPa, fracture energy Gc {GC_DEFAULT:g} pg/us^2 = {GC_DEFAULT / 1000:g} J/m^2 "
+          f"strain it is pressed twice as far); the pair is then gripped (wall nodes within {ps['grip']:g} um of a "
+          f"plate) and the top grip pulled up at {vpull:g} m/s. Walls do not rupture (lamf {ps['lamf']:g}); lamella: "
+          f"strength sigl {sigl:g} kPa, fracture energy Gc {Gl:g} pg/us^2 = {Gl / 1000:g} J/m^2 "
           "(tissue-model.lmp defaults). Force curves are smoothed by a centred moving average over "
           f"{WINDOW_US:g} us ({n} samples) of plate time; the raw force rings at the walls' frequencies.", "",
           f"![press]({self.link('pair-press.png')})", "",
@@ -261,7 +265,7 @@ class Report:
             w(f"![pull]({self.link('pair-pull.png')})", "",
               "| quantity | definition | value |", "|---|---|---|",
               f"| pull-off force | largest smoothed force on the top grip (tension > 0; centred moving average over "
-              f"{npl * dsep:.3g} um of separation = {npl * dsep / 0.5:.3g} us, one period of the ringing) | "
+              f"{npl * dsep:.3g} um of separation = {npl * dsep / vpull:.3g} us, one period of the ringing) | "
               f"{fmt(S['pull_force_max_nN'] / 1e3)} uN at {fmt(S['pull_force_max_sep_um'])} um (raw largest: "
               f"{fmt(S['pull_force_max_raw_nN'] / 1e3)} uN) |",
               f"| largest adhesion across the interface | -(lamella + contact force), cell/contacts col. 7 + 8 | "
@@ -298,7 +302,7 @@ class Report:
             w("Why W need not equal Gc A0: the grips pull on the walls, not on the interface. (i) The grip force "
               "works on the cells' walls and fluid too: elastic energy stored in the stretched cells is released "
               "when the last bonds go (and can drive debonding the grip does not pay for); (ii) the fluid viscosity "
-              "and the contact damping dissipate work at 0.5 m/s; the pair rings at its shape mode (period "
+              f"and the contact damping dissipate work at {vpull:g} m/s; the pair rings at its shape mode (period "
               f"{fmt(S.get('pull_ringing_period_um'))} um of separation here), and clipping F > 0 on that signal "
               "counts half-cycles that give energy back, so the force is smoothed over one period first; "
               "(iii) the interface peels from its rim: only part of the bonds carries load at a time, so the "
@@ -312,12 +316,13 @@ class Report:
     # ------------------------------------------------------------------ 2. block
     def compress_run(self, name, Pi, lam):
         d = T.load(self.p(f"{name}/tissue-compress.dat"), T.COMPRESS)
+        cs = self.settings(name, "in.tissue-compress", lam)
         ncell = int(self.block["cells"])
         dt = float(np.median(np.diff(d["time_us"])))
         n = max(1, int(round(WINDOW_US / dt)))
         sm = T.smooth(d["stress_kPa"], n)
         eps = d["strain"]
-        R = {"name": name, "Pi_kPa": Pi, "lamella": lam, "sigl_kPa": LAMS[lam][0], "Gl": LAMS[lam][1],
+        R = {"name": name, "Pi_kPa": Pi, "lamella": lam, "sigl_kPa": cs["sigl"], "Gl": cs["Gl"],
              "window_samples": n, "strain_end": float(eps[-1])}
         m = (eps >= EPS_FIT[0]) & (eps <= EPS_FIT[1])
         R["modulus_kPa"] = float(np.polyfit(eps[m], sm[m], 1)[0]) if m.sum() >= 3 else None
@@ -361,13 +366,24 @@ class Report:
             R["leaked_particles_end"] = int(L["leaked_particles"][-1])
         T.write_csv(self.fig(f"{name}.csv"), {**d, "stress_smoothed_kPa": sm},
                     ["time_us", "strain", "stress_kPa", "stress_smoothed_kPa"] + T.COMPRESS[3:],
-                    f"in.tissue-compress Pi {Pi} kPa, lamella {lam} (sigl {LAMS[lam][0]:g} kPa, Gl {LAMS[lam][1]:g}); "
+                    f"in.tissue-compress Pi {Pi} kPa, lamella {lam} (sigl {cs['sigl']:g} kPa, Gl {cs['Gl']:g}); "
                     f"smoothed: centred moving average over {n} samples ({WINDOW_US:g} us)")
         return R, d, sm
+
+    def block_settings(self):
+        """{lamella: the settings of its first block compression} (where none ran: the input's
+        defaults with the named lamella)."""
+        out = {}
+        for lam in LAMS:
+            names = [f"compress{Pi}-{lam}" for Pi in PIS if os.path.exists(self.p(f"compress{Pi}-{lam}/tissue-compress.dat"))]
+            out[lam] = (self.settings(names[0], "in.tissue-compress", lam) if names else
+                        dict(params.defaults(os.path.join(params.INPUTS, "in.tissue-compress")), **params.lamellae()[lam]))
+        return out
 
     def blocks(self):
         w = self.w
         ncell = int(self.block["cells"])
+        st, wk = (self.block_settings()[lam] for lam in ("strong", "weak"))
         runs = {}
         for Pi in PIS:
             for lam in LAMS:
@@ -382,9 +398,10 @@ class Report:
         w(f"## 2. Block of {ncell} cells compressed to failure", "",
           f"`cellgen.py tissue --lattice sc` ({ncell} cells, {self.block['lamella_bonds']} lamella bonds, glued "
           f"area {sum(p['glued_area'] for p in self.block['pairs']):.6g} um^2 over {len(self.block['pairs'])} "
-          "cell pairs), inflated twice with `in.tissue-inflate` (Pi -364 and -100 kPa), each "
-          "compressed with `in.tissue-compress -var lamf 1.04` (tethers break at 4% stretch, the paper's) "
-          "with a strong (sigl 300 kPa, Gl 1000 pg/us^2 = 1 J/m^2) and a weak lamella (30 kPa, 100 pg/us^2). "
+          f"cell pairs), inflated twice with `in.tissue-inflate` (Pi {' and '.join(map(str, PIS))} kPa), each "
+          f"compressed with `in.tissue-compress -var lamf {st['lamf']:g}` (tethers break at {st['lamf'] - 1:.0%} "
+          f"stretch, the paper's) with a strong (sigl {st['sigl']:g} kPa, Gl {st['Gl']:g} pg/us^2 = "
+          f"{st['Gl'] / 1000:g} J/m^2) and a weak lamella ({wk['sigl']:g} kPa, {wk['Gl']:g} pg/us^2). "
           "Stress = top-plate force / initial cross-section of the block; strain = plate travel from first "
           f"contact / initial height. Stress smoothed by a centred moving average over {WINDOW_US:g} us of plate "
           "time (faint: raw); the plate force rings with the walls.", "",
@@ -650,8 +667,11 @@ class Report:
         fig.tight_layout()
         fig.savefig(self.fig("impact-bruise.png"), dpi=110)
         plt.close(fig)
-        w(f"## 3. Impact on the turgid block (Pi -364 kPa, strong lamella)", "",
-          "`in.tissue-impact -var vplate V` (lamf 1.04, sigl 300 kPa, Gl 1 J/m^2): the top plate hits at V and drives "
+        ran = [v for v in SPEEDS if os.path.exists(self.p(f"impact-{v}/tissue-impact.dat"))]
+        im = self.settings(f"impact-{ran[0] if ran else SPEEDS[0]}", "in.tissue-impact")
+        w(f"## 3. Impact on the turgid block (Pi {im['Pi']:g} kPa, strong lamella)", "",
+          f"`in.tissue-impact -var vplate V` (lamf {im['lamf']:g}, sigl {im['sigl']:g} kPa, Gl {im['Gl'] / 1000:g} J/m^2): "
+          "the top plate hits at V and drives "
           "in at that constant speed to the strain of run-info.txt, then holds (run-info.txt) while the block settles. "
           "**Impact energy** = the plate's work, the integral of F_top x V dt over the pressing time (until the "
           "strain stops growing), from the force time series (every 50 steps, trapezoids; 1 pJ = 1000 nN um). "
@@ -690,11 +710,13 @@ class Report:
         self.S["inflation"] = rows
         if not rows:
             return
-        self.w("## Inflation", "", "`in.tissue-inflate` (Lp 10 um/(kPa us), mu 10 mPa s, then a 2000-step settle under "
+        s = self.settings(rows[0]["run"], "in.tissue-inflate")
+        self.w("## Inflation", "", f"`in.tissue-inflate` (Lp {s['Lp']:g} um/(kPa us), mu {s['mu']:g} mPa s, then a "
+               f"{s['nsettle']:.0f}-step settle under "
                "a drag with osmosis on, so that the tissue is at rest): the state at its end, which "
                "every experiment continues from (Lp 1e-9 then: the cells keep their water). Mass change: relative "
-               "growth of the fluid mass over the last 500 steps (how far from osmotic equilibrium).", "",
-               "| run | cells | time (us) | P mean / min / max (kPa) | mean tether stretch | mass change, last 500 steps | "
+               f"growth of the fluid mass over the last {s['every']:.0f} steps (how far from osmotic equilibrium).", "",
+               f"| run | cells | time (us) | P mean / min / max (kPa) | mean tether stretch | mass change, last {s['every']:.0f} steps | "
                "glued area (um^2) | debonded bonds | broken tethers |", "|" + "---|" * 9)
         for r in rows:
             self.w(f"| {r['run']} | {r['what']} | {fmt(r['time_us'])} | {fmt(r['P_mean_kPa'])} / {fmt(r['P_min_kPa'])} / "
