@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Tissue compression at converged plate speeds (issue 29): a coarse block (cellgen.py tissue
 # --lattice sc --n BLOCK --level 3; 2x2x2 by default) inflated at three turgors (Pi -100, -364, -600 kPa) with
-# a strong and a weak middle lamella (tools/cellmech/params.py: `python3 -m cellmech.params lamella
-# weak`) (each block is
-# inflated with the lamella it is compressed with: the inflated equilibrium depends on it), then
+# a strong and a weak middle lamella (named in tools/cellmech/params.py: `python3 -m cellmech.params
+# lamella weak`; each block is inflated with the lamella it is compressed with: the inflated
+# equilibrium depends on it), then
 # compressed to failure (lamf 1.04) with in.tissue-compress's quasi-static protocol at two speeds,
 # V and V/2 (the rate evidence), and a report (tools/cellmech/tissue/converged.py): converged
 # modulus with its strain window, failure stress and strain, failure mode, the quasi-static check

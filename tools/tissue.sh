@@ -5,8 +5,9 @@
 #      single cell of the same size pressed alone: force vs strain, contact and glued area,
 #      pull-off force, work of separation against Gc x glued area;
 #   2. block: 3x3x3 cells inflated at two turgors (Pi -364 and -100 kPa), each compressed to 30%
-#      with a strong and a weak middle lamella (tools/cellmech/params.py: `python3 -m cellmech.params
-#      lamella strong`) (in.tissue-compress, lamf 1.04): stress-strain, modulus, failure strain and mode;
+#      with a strong and a weak middle lamella (named in tools/cellmech/params.py: `python3 -m
+#      cellmech.params lamella weak`; in.tissue-compress, lamf 1.04): stress-strain, modulus, failure
+#      strain and mode;
 #   3. impact: the turgid block (Pi -364) hit at 5, 10, 20 m/s (in.tissue-impact): bruise
 #      (ruptured cells, debonded area, fluid lost) against the impact energy.
 #   4. water (fix cell/fluid solute/exchange/external): one inflated cell against external water
