@@ -7,7 +7,7 @@ import types
 
 import numpy as np
 
-from .. import reporting
+from .. import params, reporting
 from . import tissuedata as T
 
 plt = reporting.pyplot()
@@ -191,10 +191,12 @@ def text_press(rep, S, ps, n, window_us):
     """The section's heading, what ran, and the press table."""
     fmt, pct = T.fmt, T.pct
     sigl, Gl = ps["sigl"], ps["Gl"]
+    inflate = rep.settings("inflate-pair", "in.tissue-inflate")
     rep.w(TITLE, "",
           "`cellgen.py tissue --lattice sc --n 1 1 2` (two cells stacked along z, glued across one face) and "
-          "`--n 1 1 1` (one cell of the same equivalent radius, 30 um), each inflated with `in.tissue-inflate` "
-          f"(Pi {ps['Pi']:g} kPa, Lp 10, the steps of run-info.txt), then `in.tissue-pair`: the plates press at "
+          f"`--n 1 1 1` (one cell of the same equivalent radius, {params.CELL['R']:g} um), each inflated with "
+          f"`in.tissue-inflate` (Pi {ps['Pi']:g} kPa, Lp {inflate['Lp']:g}, the steps of run-info.txt), then "
+          "`in.tissue-pair`: the plates press at "
           f"{ps['vplate']:g} m/s to {ps['press']:.0%} "
           "strain (strain = plate travel from first contact / initial height; the pair is twice as high, so at one "
           f"strain it is pressed twice as far); the pair is then gripped (wall nodes within {ps['grip']:g} um of a "
