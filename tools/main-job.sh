@@ -29,6 +29,8 @@ NFLUID=${NFLUID:-$nf}
 ninfl=$(/usr/bin/python3 -c "print(round(25.0/$dt))")
 model=(-var dir "$here/lammps-inputs" -var s "$s" -var r0 "$r0" -var f0 "$f0" -var reach "$reach" -var dt "$dt" "${wall_vars[@]}")
 run() { mpi_run "$NP" "$LMP" "$@"; }
+# trun ARGS...: a tissue run, its effective settings first written to settings.json (one entry per input)
+trun() { /usr/bin/python3 -m cellmech.params settings -- "$@" && run "$@"; }
 /usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level "$LEVEL" --nfluid "$NFLUID" --inset "$r0" "${wall_gen[@]}"
 echo "inflating ..."
 run -in "$here/lammps-inputs/in.inflate" -log log.inflate -screen none "${model[@]}" \
@@ -53,10 +55,10 @@ read -r tnf ts tr0 tf0 treach < <(level_params 3 nfluid s r0 f0 reach)
 read -r treach tspecial < <(/usr/bin/python3 -c "import json; s = json.load(open('tissue.json'))
 print(max($treach, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])")
 tmodel=(-var dir "$here/lammps-inputs" -var s "$ts" -var r0 "$tr0" -var f0 "$tf0" -var reach "$treach" "${wall_vars[@]}")
-run -in "$here/lammps-inputs/in.tissue-inflate" -log log.tissue-inflate -screen none "${tmodel[@]}" \
+trun -in "$here/lammps-inputs/in.tissue-inflate" -log log.tissue-inflate -screen none "${tmodel[@]}" \
   -var data tissue.data -var special "$tspecial" -var every 1000 \
   -var restart_out tissue.restart
-run -in "$here/lammps-inputs/in.tissue-compress" -log log.tissue-compress -screen none "${tmodel[@]}" \
+trun -in "$here/lammps-inputs/in.tissue-compress" -log log.tissue-compress -screen none "${tmodel[@]}" \
   -var restart tissue.restart -var lamf 1.04 -var vplate 0.25 -var strain 0.15 -var vtk 15000
 /usr/bin/python3 "$here/tools/plot_tissue.py" "$out"
 echo "main job done: results in $out"

@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Tissue compression at converged plate speeds (issue 29): a coarse block (cellgen.py tissue
 # --lattice sc --n BLOCK --level 3; 2x2x2 by default) inflated at three turgors (Pi -100, -364, -600 kPa) with
-# a strong (sigl 300 kPa, Gl 1 J/m^2) and a weak (30 kPa, 0.1 J/m^2) middle lamella (each block is
-# inflated with the lamella it is compressed with: the inflated equilibrium depends on it), then
+# a strong and a weak middle lamella (named in tools/cellmech/params.py: `python3 -m cellmech.params
+# lamella weak`; each block is inflated with the lamella it is compressed with: the inflated
+# equilibrium depends on it), then
 # compressed to failure (lamf 1.04) with in.tissue-compress's quasi-static protocol at two speeds,
 # V and V/2 (the rate evidence), and a report (tools/cellmech/tissue/converged.py): converged
 # modulus with its strain window, failure stress and strain, failure mode, the quasi-static check
@@ -21,6 +22,8 @@
 # converged gets the next rung into the same folder, e.g.
 #   OUT=... PIS=-100 SPEEDS=0.125 ONLY="compress-100-strong-0.125 compress-100-weak-0.125 report"
 # and the report judges each condition on the two slowest speeds it finds (V/2 against V).
+# Each run's folder gets settings.json (every -var it was given and the defaults that applied; the
+# report reads the lamellae from there).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 [ -f "$here/build/cellmech-env.sh" ] || bash "$here/tools/setup.sh"
@@ -52,13 +55,16 @@ stage() {
   [ $rc -eq 0 ] || echo "  $name failed, see $out/$name/log.lammps" >&2
 }
 bg() { while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done; stage "$@" & }
-declare -A SIGL=([strong]=300 [weak]=30) GL=([strong]=1000 [weak]=100)
+# the named lamellae (tools/cellmech/params.py): sigl (kPa) and Gl (pg/us^2) of each
+declare -A SIGL GL
+for lam in strong weak; do read -r "SIGL[$lam]" "GL[$lam]" < <($py -m cellmech.params lamella $lam sigl Gl); done
 PIS=${PIS:-"-100 -364 -600"}
 read -r NF < <(level_params 3 nfluid)
 gen() { $py "$here/tools/cellgen.py" tissue -o block.data --lattice sc --n $BLOCK --level 3 --nfluid "$NF" \
           --stats block.json > block.txt; }
 stage gen gen
-lmp() { mpi_run "$NP" "$LMP" "$@"; }
+# lmp ARGS...: a LAMMPS run, its effective settings first written to ./settings.json
+lmp() { $py -m cellmech.params settings -- "$@" && mpi_run "$NP" "$LMP" "$@"; }
 infl() {  # PI LAM
   lmp -in "$INPUTS/in.tissue-inflate" -screen none -var dir "$INPUTS" -var data "$out/gen/block.data" \
     -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" -var every 1000 -var restart_out block.restart

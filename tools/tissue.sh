@@ -5,8 +5,9 @@
 #      single cell of the same size pressed alone: force vs strain, contact and glued area,
 #      pull-off force, work of separation against Gc x glued area;
 #   2. block: 3x3x3 cells inflated at two turgors (Pi -364 and -100 kPa), each compressed to 30%
-#      with a strong (sigl 300 kPa, Gl 1 J/m^2) and a weak (30 kPa, 0.1 J/m^2) middle lamella
-#      (in.tissue-compress, lamf 1.04): stress-strain, modulus, failure strain and mode;
+#      with a strong and a weak middle lamella (named in tools/cellmech/params.py: `python3 -m
+#      cellmech.params lamella weak`; in.tissue-compress, lamf 1.04): stress-strain, modulus, failure
+#      strain and mode;
 #   3. impact: the turgid block (Pi -364) hit at 5, 10, 20 m/s (in.tissue-impact): bruise
 #      (ruptured cells, debonded area, fluid lost) against the impact energy.
 #   4. water (fix cell/fluid solute/exchange/external): one inflated cell against external water
@@ -25,7 +26,8 @@
 #   already done), REPORT (report folder; default $OUT; "docs" = the repository's docs/),
 #   INPUTS (folder of the input scripts, default lammps-inputs), WALL (tether | membrane | bending,
 #   lammps-inputs/cell-wall.lmp; the run folder gets -$WALL).
-# Every LAMMPS run has its own sub-folder of $OUT (its log, data files, pictures, VTK surfaces); the
+# Every LAMMPS run has its own sub-folder of $OUT (its log, data files, pictures, VTK surfaces, and
+# settings.json: every -var it was given and the defaults that applied, which the report reads); the
 # wall time of each stage is in $OUT/times.txt.
 set -euo pipefail
 here=${CELLMECH_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
@@ -54,7 +56,11 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 cd "$out"
 
-lmp() { mpi_run "$NP" "$LMP" "$@"; }
+# lmp ARGS...: a LAMMPS run, its effective settings first written to ./settings.json
+lmp() { $py -m cellmech.params settings -- "$@" && mpi_run "$NP" "$LMP" "$@"; }
+# the named lamellae (tools/cellmech/params.py): sigl (kPa) and Gl (pg/us^2) of each
+declare -A SIGL GL
+for lam in strong weak; do read -r "SIGL[$lam]" "GL[$lam]" < <($py -m cellmech.params lamella $lam sigl Gl); done
 want() { [ -z "${ONLY:-}" ] || [[ " $ONLY " == *" $1 "* ]]; }
 # stage NAME CMD...: run once in $out/NAME, record the wall time in times.txt; a failed stage is
 # recorded and skipped
@@ -118,26 +124,26 @@ wait
 
 # ---- block compressions (4), impacts (3), pair press and pull, single press: two at a time
 fc=$(frames $EPSC $VC 0)
-comp() {  # PI SIGL GL NAME
+comp() {  # PI LAMELLA NAME
   lmp -in "$INPUTS/in.tissue-compress" -screen none $(model "$reach_b") -var special "$special_b" \
     -var restart "$out/inflate${1}/tissue.restart" -var Pi "$1" -var lamf 1.04 -var vplate $VC \
-    -var strain $EPSC -var sigl "$2" -var Gl "$3" -var every $EVC -var tabevery $TAB \
-    -var img "$fc" -var vtk "$fc" -var imgprefix "$4"
+    -var strain $EPSC -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" -var every $EVC -var tabevery $TAB \
+    -var img "$fc" -var vtk "$fc" -var imgprefix "$3"
 }
 imp() {  # V
   lmp -in "$INPUTS/in.tissue-impact" -screen none $(model "$reach_b") -var special "$special_b" \
     -var restart "$out/inflate-364/tissue.restart" -var Pi -364 -var lamf 1.04 -var vplate "$1" \
-    -var strain $EPSI -var hold $HOLDI -var sigl 300 -var Gl 1000 -var tabevery $TAB \
+    -var strain $EPSI -var hold $HOLDI -var sigl "${SIGL[strong]}" -var Gl "${GL[strong]}" -var tabevery $TAB \
     -var img "$(frames $EPSI "$1" $HOLDI)" -var imgprefix "impact-$1"
 }
 pairrun() {  # NCELL REACH
   lmp -in "$INPUTS/in.tissue-pair" -screen none $(model "$2") -var ncell "$1" -var Pi -364 \
-    -var restart "$out/inflate-$3/pair.restart" -var pull $PULL -var sigl 300 -var Gl 1000
+    -var restart "$out/inflate-$3/pair.restart" -var pull $PULL -var sigl "${SIGL[strong]}" -var Gl "${GL[strong]}"
 }
-bg compress-364-strong comp -364 300 1000 compress-364-strong
-bg compress-100-strong comp -100 300 1000 compress-100-strong
-bg compress-364-weak comp -364 30 100 compress-364-weak
-bg compress-100-weak comp -100 30 100 compress-100-weak
+bg compress-364-strong comp -364 strong compress-364-strong
+bg compress-100-strong comp -100 strong compress-100-strong
+bg compress-364-weak comp -364 weak compress-364-weak
+bg compress-100-weak comp -100 weak compress-100-weak
 for v in 5 10 20; do bg impact-$v imp $v; done
 bg pair pairrun 2 "$reach_p" pair
 bg single pairrun 1 "$reach_s" single

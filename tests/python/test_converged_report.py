@@ -90,3 +90,37 @@ def test_a_stress_still_rising_at_the_end_is_no_failure_stress():
     e = np.linspace(0.0, 0.1, 201)
     m = C.measure(record(e, 800.0 * e), record(e, 800.0 * e))
     assert m["rising"] and not m["failure_converged"] and "| > 7" in C.table({(-100, "weak"): dict(m, v=0.25)})
+
+
+def test_the_lamellae_are_read_from_the_runs_settings(tmp_path):
+    """The report names each lamella as its runs were given it (settings.json), not as restated."""
+    from cellmech import params
+    e = np.linspace(0.0, 0.1, 21)
+    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
+    for lam, sigl in (("strong", 42.0), ("weak", 7.0)):
+        for speed in (0.5, 0.25):
+            d = tmp_path / f"compress-364-{lam}-{speed:g}"
+            d.mkdir()
+            np.savetxt(d / "tissue-compress.dat", rows)
+            params.write_settings(["-in", f"{params.INPUTS}/in.tissue-compress", "-var", "sigl", str(sigl),
+                                   "-var", "Gl", "250", "-var", "lamf", "1.05"], str(d))
+    lams = C.lamella_settings(str(tmp_path), C.load_runs(str(tmp_path)))
+    assert (lams["strong"]["sigl"], lams["weak"]["sigl"], lams["weak"]["Gl"]) == (42.0, 7.0, 250.0)
+    assert C.lamella_words(lams) == ("a strong (sigl 42 kPa, Gl 0.25 J/m^2) and a weak lamella "
+                                     "(7 kPa, 0.25 J/m^2)")
+    # a run older than settings.json: the named lamella of cellmech.params
+    (tmp_path / "compress-364-weak-0.25" / "settings.json").unlink()
+    assert C.run_settings(str(tmp_path), -364, "weak", 0.25)["sigl"] == params.lamellae()["weak"]["sigl"]
+
+
+def test_the_summary_says_what_ran_and_what_passed():
+    e = np.linspace(0.0, 0.1, 201)
+    m = C.measure(record(e, 800.0 * e), record(e, 800.0 * e))
+    rows = {(-100, "weak"): dict(m, v=0.25), (-364, "weak"): dict(m, v=0.125)}
+    gen = {"cells": 8, "seeds": "lattice sc 2x2x2, constant 48.36", "wall_nodes_per_cell": 642,
+           "volume_mean": 48.0 ** 3, "faces_mean": 6.0, "neighbours_mean": 3.0, "cell": [{"fluid": 440}] * 8}
+    text = C.summary(rows, gen, {"weak": {"sigl": 30.0, "Gl": 100.0}}, 1.04)
+    assert "inflated at Pi -100 and -364 kPa with a weak lamella (sigl 30 kPa, Gl 0.1 J/m^2)" in text
+    assert "at v = 0.125 and 0.25 m/s" in text and "critical stretch 1.04" in text
+    assert "The modulus converged in 2 of 2 conditions" in text and ": 800 kPa." in text
+    assert "First failure: none" in text and "in 2 of 2 conditions" in text

@@ -90,3 +90,54 @@ def test_shell_scripts_read_the_table():
         text = open(os.path.join(ROOT, "tools", script)).read()
         assert "level_params" in text, script
         assert not re.search(r"\bs=?6\.4\b|8\.0e4|1\.0e4\*k", text), f"{script} has its own level table"
+
+
+def test_named_lamellae_strong_is_tissue_model_default():
+    """One definition of each named lamella: strong is tissue-model.lmp's default, weak a tenth of it."""
+    tissue = params.table(params.TISSUE_FILE)
+    lam = params.lamellae()
+    assert lam["strong"] == dict(sigl=tissue["sigl"], Gl=tissue["Gl"])
+    assert lam["weak"] == dict(sigl=tissue["sigl"] / 10, Gl=tissue["Gl"] / 10)
+    assert cli("lamella", "weak", "sigl", "Gl").stdout.split() == ["30.0", "100.0"]
+    assert cli("lamella", "strong", "Gl").stdout.split() == [f"{tissue['Gl']}"]
+    assert cli("lamella", "medium").returncode == 2
+
+
+def test_defaults_follow_includes_first_definition_wins(tmp_path):
+    """An input's index settings and those of the files it includes from ${dir}, in LAMMPS's order."""
+    (tmp_path / "in.x").write_text("variable a index 1\ninclude ${dir}/m.lmp\nvariable b index 9\n"
+                                   'if "1 > 0" then "include ${dir}/n.lmp"\n')
+    (tmp_path / "m.lmp").write_text("variable a index 2\nvariable b index 3\nvariable w index tether\n")
+    (tmp_path / "n.lmp").write_text("variable c index 4\n")
+    assert params.defaults(str(tmp_path / "in.x"), str(tmp_path)) == {"a": 1.0, "b": 3.0, "w": "tether"}
+    inp = os.path.join(params.INPUTS, "in.tissue-compress")
+    d = params.defaults(inp)
+    # in.tissue-compress's own, tissue-model.lmp's lamella and cell-model.lmp's wall, through the includes
+    assert d["lamf"] == 1.04 and d["sigl"] == params.lamellae()["strong"]["sigl"]
+    assert d["G"] == params.table()["G"]
+
+
+def test_settings_json_holds_the_vars_passed_and_the_defaults(tmp_path):
+    """settings.json, written before a run: every -var passed, and the defaults that applied; one
+    entry per input; run_settings reads it back (and falls back to the defaults without it)."""
+    inp = os.path.join(params.INPUTS, "in.tissue-compress")
+    env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "tools"))
+    argv = ["-in", inp, "-screen", "none", "-var", "dir", params.INPUTS, "-var", "Pi", "-100",
+            "-var", "sigl", "30", "-var", "Gl", "100", "-var", "vplate", "0.5"]
+    p = subprocess.run([sys.executable, "-m", "cellmech.params", "settings", "--", *argv], env=env,
+                       cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    assert p.returncode == 0, p.stderr
+    s = params.run_settings(str(tmp_path), "in.tissue-compress")
+    assert (s["Pi"], s["sigl"], s["Gl"], s["vplate"]) == (-100.0, 30.0, 100.0, 0.5)
+    assert s["lamf"] == params.defaults(inp)["lamf"] and s["respa"] == params.defaults(inp)["respa"]
+    params.write_settings(["-in", os.path.join(params.INPUTS, "in.tissue-inflate"), "-var", "Pi", "-600"],
+                          str(tmp_path))
+    import json
+    data = json.load(open(tmp_path / "settings.json"))
+    assert set(data) == {"in.tissue-compress", "in.tissue-inflate"}
+    assert data["in.tissue-compress"]["var"]["vplate"] == 0.5
+    old = params.run_settings(str(tmp_path / "none"), "in.tissue-compress", {"sigl": 30.0})
+    assert old["sigl"] == 30.0 and old["vplate"] == params.defaults(inp)["vplate"]
+    p = subprocess.run([sys.executable, "-m", "cellmech.params", "settings", "--", "-var", "a", "1"],
+                       env=env, cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    assert p.returncode == 2 and "no -in FILE" in p.stderr

@@ -11,15 +11,22 @@ Shell scripts read both through the command line:
   python3 -m cellmech.params level 4 nfluid s r0 f0 reach dt    -> 3500 3.2 1.6 10000.0 2.0 0.001
   python3 -m cellmech.params table G t0 c                       -> 800000.0 0.126 264.6
   python3 -m cellmech.params cell R M_wall P                    -> 30.0 13000.0 364.0
+  python3 -m cellmech.params lamella weak sigl Gl               -> 30.0 100.0
+  python3 -m cellmech.params settings -- -in FILE -var Pi -100 ...   (before a LAMMPS run: writes
+      ./settings.json, the run's effective settings; `run_settings()` reads them back)
 (tools/common.sh sets PYTHONPATH for them). Units micro: um, pg, us, kPa, nN, mPa s.
 """
 import argparse
+import json
 import os
 import re
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-MODEL_FILE = os.path.join(ROOT, "lammps-inputs", "cell-model.lmp")
+INPUTS = os.path.join(ROOT, "lammps-inputs")
+MODEL_FILE = os.path.join(INPUTS, "cell-model.lmp")
+TISSUE_FILE = os.path.join(INPUTS, "tissue-model.lmp")
+SETTINGS = "settings.json"
 
 # Model lengths per level of the wall's icosphere (10 4^level + 2 nodes). A level coarser doubles
 # the wall spacing, the contact distance r0 and the barycentre reach, and the contact strength f0
@@ -45,7 +52,13 @@ WALLS = ("tether", "membrane", "bending")
 CELL = dict(R=30.0, M_wall=1.3e4, P=364.0)
 SOFT = dict(G=20.0e3 / 3.0, t0=0.005, P=0.1)
 
+# The named middle lamellae of the tissue experiments (strength sigl, kPa; fracture energy Gl,
+# pg/us^2 = mJ/m^2, LAMMPS's -var Gl). The strong one is tissue-model.lmp's default lamella, read
+# from there; the weak one has a tenth of its strength and a tenth of its fracture energy.
+WEAK_LAMELLA = dict(sigl=30.0, Gl=100.0)
+
 _VARIABLE = re.compile(r"^\s*variable\s+(\w+)\s+index\s+(\S+)")
+_INCLUDE = re.compile(r"^\s*include\s+\$\{dir\}/(\S+)")
 
 
 def table(path=MODEL_FILE, overrides=None):
@@ -62,6 +75,90 @@ def table(path=MODEL_FILE, overrides=None):
                     out[m.group(1)] = m.group(2)
     out.update(overrides or {})
     return out
+
+
+def number(text):
+    """A -var or index value as table() reads it: a float where it is a number, else the text."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def lamellae():
+    """{name: {sigl, Gl}} of the named lamellae: strong (tissue-model.lmp's default) and weak."""
+    t = table(TISSUE_FILE)
+    return {"strong": dict(sigl=t["sigl"], Gl=t["Gl"]), "weak": dict(WEAK_LAMELLA)}
+
+
+def defaults(path, inputs=INPUTS):
+    """The `variable NAME index VALUE` settings of an input script and of the files it includes
+    (`include ${dir}/NAME`, in order, from the folder inputs), the first definition of each: what
+    LAMMPS uses where no -var sets it. Conditional includes (`if ... then "include ..."`) are not
+    followed."""
+    out = {}
+
+    def walk(p):
+        with open(p) as f:
+            for line in f:
+                m = _VARIABLE.match(line)
+                if m:
+                    out.setdefault(m.group(1), number(m.group(2)))
+                m = _INCLUDE.match(line)
+                if m and os.path.exists(os.path.join(inputs, m.group(1))):
+                    walk(os.path.join(inputs, m.group(1)))
+    walk(path)
+    return out
+
+
+def lammps_vars(argv):
+    """(input file, {name: value}) of a LAMMPS command line's -in and -var NAME VALUE arguments."""
+    inp, var = None, {}
+    k = 0
+    while k < len(argv):
+        a = argv[k]
+        if a in ("-in", "-i") and k + 1 < len(argv):
+            inp, k = argv[k + 1], k + 2
+        elif a in ("-var", "-v") and k + 2 < len(argv):
+            var[argv[k + 1]] = number(argv[k + 2])
+            k += 3
+        else:
+            k += 1
+    return inp, var
+
+
+def write_settings(argv, folder="."):
+    """Record a LAMMPS run's effective settings in FOLDER/settings.json, under its input's name:
+    the -var values passed (var) and every index setting with the defaults that applied (settings).
+    A folder of several runs keeps one entry per input."""
+    inp, var = lammps_vars(argv)
+    if inp is None:
+        raise ValueError("settings: no -in FILE in the LAMMPS command line")
+    inputs = var.get("dir", os.path.dirname(os.path.abspath(inp)))
+    eff = dict(defaults(inp, str(inputs)))
+    eff.update(var)
+    path = os.path.join(folder, SETTINGS)
+    data = json.load(open(path)) if os.path.exists(path) else {}
+    data[os.path.basename(inp)] = {"var": var, "settings": eff}
+    with open(path, "w") as f:
+        json.dump(data, f, indent=1)
+        f.write("\n")
+    return eff
+
+
+def run_settings(folder, inp, var=None):
+    """A run's effective settings, read back from FOLDER/settings.json (its entry for input inp).
+    A run older than settings.json has none: then the input's defaults here, with var (what its
+    driver is known to have passed) over them, and a note on stderr."""
+    path = os.path.join(folder, SETTINGS)
+    if os.path.exists(path):
+        data = json.load(open(path))
+        if inp in data:
+            return data[inp]["settings"]
+    print(f"params: no {inp} entry in {path}: {inp}'s defaults assumed", file=sys.stderr)
+    eff = defaults(os.path.join(INPUTS, inp))
+    eff.update(var or {})
+    return eff
 
 
 def stiff():
@@ -98,14 +195,25 @@ def main(argv=None):
     tb.add_argument("keys", nargs="*")
     ce = sub.add_parser("cell", help="the cell around the force field")
     ce.add_argument("keys", nargs="*", help=f"of {', '.join(CELL)}")
+    la = sub.add_parser("lamella", help="a named middle lamella (strong: tissue-model.lmp's default)")
+    la.add_argument("name", choices=sorted(lamellae()))
+    la.add_argument("keys", nargs="*", help="of sigl, Gl")
+    se = sub.add_parser("settings", help="write ./settings.json for a LAMMPS command line")
+    se.add_argument("lammps", nargs=argparse.REMAINDER, help="-- -in FILE -var NAME VALUE ...")
     a = p.parse_args(argv)
+    if a.what == "settings":
+        try:
+            write_settings([x for x in a.lammps if x != "--"])
+        except (ValueError, OSError) as e:
+            p.exit(2, f"{p.prog} settings: error: {e}\n")
+        return
     if a.what == "level":
         try:
             row = level(a.level)
         except ValueError as e:
             p.exit(2, f"{p.prog} level: error: {e}\n")
     else:
-        row = table() if a.what == "table" else CELL
+        row = {"table": table, "cell": lambda: CELL, "lamella": lambda: lamellae()[a.name]}[a.what]()
     keys = a.keys or list(row)
     bad = [k for k in keys if k not in row]
     if bad:

@@ -25,12 +25,12 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from .. import params  # noqa: E402
 from .. import quasistatic as Q  # noqa: E402
-from .report import fmt  # noqa: E402
-from .tissuedata import COMPRESS, failure, gen_stats, load  # noqa: E402
+from .tissuedata import COMPRESS, and_list, failure, fmt, gen_stats, load, span  # noqa: E402
 
 PIS = (-100, -364, -600)
-LAMELLAE = {"strong": (300.0, 1.0), "weak": (30.0, 0.1)}       # sigl kPa, Gc J/m^2
+LAMELLAE = tuple(params.lamellae())   # the named lamellae: strong, weak
 # past the plates' first contacts with the block's domed faces (at Pi -100 kPa the 2-4% window is
 # still dynamic at 0.25 m/s: the flaccid block carries little load there), before any cell fails
 MODULUS_WINDOW = (0.04, 0.06)
@@ -142,7 +142,21 @@ def load_runs(runs):
     return out
 
 
-def figure(data, path):
+def run_settings(runs, pi, lam, v):
+    """The effective settings of the compression of condition (pi, lam) at speed v (its
+    settings.json; for a run older than it, the input's defaults with the named lamella)."""
+    return params.run_settings(f"{runs}/compress{pi}-{lam}-{v:g}", "in.tissue-compress", params.lamellae()[lam])
+
+
+def lamella_settings(runs, data):
+    """{lam: the settings of the first slow run with that lamella}: its sigl, Gl, lamf as run."""
+    out = {}
+    for (pi, lam), (v, *_) in data.items():
+        out.setdefault(lam, run_settings(runs, pi, lam, v))
+    return out
+
+
+def figure(data, lams, path):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     for ax, lam in zip(axes, LAMELLAE):
         for n, pi in enumerate(PIS):
@@ -152,7 +166,8 @@ def figure(data, path):
             c = f"C{n}"
             ax.plot(slow["strain"], slow["stress_kPa"], color=c, lw=1.2, label=f"Pi {pi} kPa, {v:g} m/s")
             ax.plot(fast["strain"], fast["stress_kPa"], color=c, lw=0.8, ls="--", label=f"Pi {pi} kPa, {2 * v:g} m/s")
-        ax.set_title(f"{lam} lamella (sigl {LAMELLAE[lam][0]:g} kPa, Gc {LAMELLAE[lam][1]:g} J/m^2)", fontsize=10)
+        if lam in lams:
+            ax.set_title(f"{lam} lamella (sigl {lams[lam]['sigl']:g} kPa, Gc {lams[lam]['Gl'] / 1000:g} J/m^2)", fontsize=10)
         ax.set_xlabel("strain (closing of the plates / initial height)")
         ax.legend(fontsize=7)
     axes[0].set_ylabel("stress (top plate force / initial cross-section, kPa)")
@@ -247,32 +262,52 @@ def block_words(gen):
             f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average)")
 
 
-def span(xs):
-    lo, hi = fmt(min(xs)), fmt(max(xs))
-    return lo if lo == hi else f"{lo}-{hi}"
+def lamella_words(lams):
+    """'a strong (sigl 300 kPa, Gl 1 J/m^2) and a weak lamella (30 kPa, 0.1 J/m^2)', as run."""
+    last = len(lams) - 1
+    return and_list(f"a {lam}{' lamella' if k == last else ''} ({'sigl ' if k == 0 else ''}{s['sigl']:g} kPa, "
+                     f"{'Gl ' if k == 0 else ''}{s['Gl'] / 1000:g} J/m^2)" for k, (lam, s) in enumerate(lams.items()))
 
 
-def text(rows, info, gen, name):
+def modes_words(rows):
+    """How the blocks failed first, counted: 'walls ruptured first in 3, ... of 6 conditions'."""
+    kinds = ["burst before loading" if m.get("burst") else m["fail"]["mode"] for m in rows.values()]
+    counts = {k: kinds.count(k) for k in dict.fromkeys(kinds)}
+    return ", ".join(f"{k} in {n}" for k, n in counts.items()) + f" of {len(rows)} conditions"
+
+
+def summary(rows, gen, lams, lamf):
+    """The plain-language summary at the top: what ran, the main numbers, what passed."""
     conv = [m for m in rows.values() if m["converged"]]
     fconv = [m for m in rows.values() if m["failure_converged"]]
     Es = [m["E"] for m in conv]
     peaks = [m["fail"]["peak_kPa"] for m in fconv]
-    summary = (f"The modulus converged in {len(conv)} of {len(rows)} conditions (plates within 5% and the curve "
-               f"within 5% of twice the speed in every 2% window from the modulus window on, the block still intact)"
-               + (f": {fmt(min(Es))}-{fmt(max(Es))} kPa." if conv else ".")
-               + f" The failure converged in {len(fconv)} (the first rupture or debond at both speeds within 1% "
-               f"strain, the walls intact at {FROM:.0%})" + (f": failure stress {span(peaks)} kPa." if fconv else "."))
+    pis = sorted({pi for pi, _ in rows}, reverse=True)
+    speeds = sorted({m["v"] for m in rows.values()})
+    ran = (f"{block_words(gen)}, glued by the middle lamella, was inflated at Pi "
+           f"{and_list(map(str, pis))} kPa with {lamella_words(lams)}, then compressed to failure "
+           f"(walls rupture at the paper's critical stretch {lamf:g}) with the quasi-static protocol of "
+           "`in.tissue-compress` (docs/Howto_plates.rst, \"A protocol that reaches quasi-static\"): at rest first, "
+           f"both plates closing after a smooth start, at v = {and_list(f'{v:g}' for v in speeds)} m/s (the "
+           "speed column) and, as the rate evidence, at 2v (the ladder's last two rungs).")
+    passed = (f"The modulus converged in {len(conv)} of {len(rows)} conditions (plates within 5% and the curve "
+              f"within 5% of twice the speed in every 2% window from the modulus window on, the block still intact)"
+              + (f": {span(Es)} kPa." if conv else ".")
+              + f" The failure converged in {len(fconv)} (the first rupture or debond at both speeds within 1% "
+              f"strain, the walls intact at {FROM:.0%})" + (f": failure stress {span(peaks)} kPa." if fconv else "."))
+    return " ".join(x for x in (ran, passed, f"First failure: {modes_words(rows)}.", compare(rows),
+                                "Every number is from the run at v; a condition that has not converged is a rate "
+                                "study, and its row says so.") if x)
+
+
+def text(rows, info, gen, name, lams):
+    lamf = next(iter(lams.values()))["lamf"]
     lit = "\n".join(f"| {a} | {b} | {c} |" for a, b, c in LITERATURE)
     return f"""# Tissue compression at converged plate speeds
 
 *Generated by `tools/tissue-converged.sh` ({info}); do not edit by hand.*
 
-**Summary.** {block_words(gen)}, glued by the middle lamella, inflated at three turgors with a strong and a weak lamella, then
-compressed to failure (walls rupture at the paper's critical stretch 1.04) with the quasi-static
-protocol of `in.tissue-compress` (docs/Howto_plates.rst, "A protocol that reaches quasi-static"): at
-rest first, both plates closing after a smooth start, at the speed v of its row and, as the rate
-evidence, at 2v (the ladder's last two rungs). {summary} Every number is from the run at v; a
-condition that has not converged is a rate study, and its row says so.
+**Summary.** {summary(rows, gen, lams, lamf)}
 
 ![stress-strain]({name}.png)
 
@@ -348,9 +383,10 @@ def main(argv=None):
     info = "; ".join(open(f"{runs}/run-info.txt").read().split("\n")).strip("; ") \
         if os.path.exists(f"{runs}/run-info.txt") else runs
     gen = gen_stats(f"{runs}/gen/block.json")
-    figure(data, f"{report}/{name}.png")
+    lams = lamella_settings(runs, data)
+    figure(data, lams, f"{report}/{name}.png")
     with open(f"{report}/{name}.md", "w") as f:
-        f.write(text(rows, info, gen, name))
+        f.write(text(rows, info, gen, name, lams))
     print(table(rows))
 
 

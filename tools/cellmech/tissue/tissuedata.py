@@ -9,8 +9,31 @@ import os
 
 import numpy as np
 
+from .. import reporting
 from ..launch import stage_times
 from ..quasistatic import KE, WORK
+
+
+def fmt(x, nd=3):
+    """A number of the tissue reports: nd significant digits, integers whole, "-" where missing."""
+    return reporting.fmt(x, nd, missing="-", exact_ints=True)
+
+
+def pct(x, nd=3):
+    """A fraction as a percentage of the tissue reports ("-" where missing)."""
+    return reporting.percent(x, nd)
+
+
+def span(xs, unit=""):
+    """'lo-hi' of the numbers (one value where they print alike), with the unit."""
+    lo, hi = fmt(min(xs)), fmt(max(xs))
+    return (lo if lo == hi else f"{lo}-{hi}") + unit
+
+
+def and_list(words):
+    """'a', 'a and b', 'a, b and c'."""
+    words = list(words)
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
 
 # fix ave/time files of the inputs (after the step column); COMPRESS ends with the kinetic energy and
 # the plate's work of the quasi-static check (cellmech.quasistatic; records older than issue 29

@@ -257,24 +257,29 @@ def lp_text(q):
             "what the rate changes most")
 
 
-def dry(rep, S):
-    if not os.path.exists(rep.p("water-dry/tissue-dry.csv")):
-        rep.w("### 3. Drying a block", "", "Not run or failed.", "")
-        return
+def dry_load(rep):
+    """(the drying record, the half-conductivity check's or None); the CSVs written."""
     d = dry_run(rep, "water-dry")
-    cols = list(d)
-    T.write_csv(rep.fig("water-dry.csv"), d, cols,
+    T.write_csv(rep.fig("water-dry.csv"), d, list(d),
                 "in.tissue-dry: 2x2x2 coarse block, Pi0 -364 kPa, solute yes, exchange yes, air at -3000 kPa, Lp 2e-4")
     slow = dry_run(rep, "water-dry-slow") if os.path.exists(rep.p("water-dry-slow/tissue-dry.csv")) else None
+    return d, slow
+
+
+def mean_edge(d):
+    """The block's size: the mean of its three edges, um."""
+    return (d["Lx_um"] + d["Ly_um"] + d["Lz_um"]) / 3
+
+
+def dry_figure(rep, d, slow):
+    """water-dry.png: volume, area, size, turgor, stretch and cell shape against the water content."""
     x = d["water_fraction"]
-    V0, A0 = d["volume_um3"][0], d["wall_area_um2"][0]
-    L0 = (d["Lx_um"][0] + d["Ly_um"][0] + d["Lz_um"][0]) / 3
-    L = (d["Lx_um"] + d["Ly_um"] + d["Lz_um"]) / 3
+    L = mean_edge(d)
     fig, ax = plt.subplots(2, 3, figsize=(13, 7))
     a = ax[0, 0]
-    a.plot(x, d["volume_um3"] / V0, label="wall-enclosed volume")
-    a.plot(x, d["wall_area_um2"] / A0, label="wall area")
-    a.plot(x, L / L0, label="block size (mean edge)")
+    a.plot(x, d["volume_um3"] / d["volume_um3"][0], label="wall-enclosed volume")
+    a.plot(x, d["wall_area_um2"] / d["wall_area_um2"][0], label="wall area")
+    a.plot(x, L / L[0], label="block size (mean edge)")
     a.plot(x, d["fluid_fill"] / d["fluid_fill"][0], "--", label="protoplasm / enclosed volume")
     a.set_ylabel("/ value at full turgor")
     a.legend(fontsize=7)
@@ -284,9 +289,8 @@ def dry(rep, S):
     a.axhline(0, color="k", lw=0.5)
     a.set_ylabel("turgor (kPa)")
     a.legend(fontsize=7)
-    a = ax[0, 2]
-    a.plot(x, d["mean_stretch"])
-    a.set_ylabel("mean tether stretch")
+    ax[0, 2].plot(x, d["mean_stretch"])
+    ax[0, 2].set_ylabel("mean tether stretch")
     a = ax[1, 0]
     a.plot(x, d["sphericity"], label="sphericity")
     a.plot(x, d["elongation"], label="elongation sqrt(g1/g3)")
@@ -309,18 +313,28 @@ def dry(rep, S):
     fig.tight_layout()
     fig.savefig(rep.fig("water-dry.png"), dpi=90)
     plt.close(fig)
-    pic = render(rep, d, S)
 
-    def at(f, key, src=d):
-        o = np.argsort(src["water_fraction"])
-        return float(np.interp(f, src["water_fraction"][o], src[key][o]))
+
+def at(src, f, key):
+    """src[key] at water content f (linear between records)."""
+    o = np.argsort(src["water_fraction"])
+    return float(np.interp(f, src["water_fraction"][o], src[key][o]))
+
+
+def dry_measure(d, slow):
+    """The drying's numbers (rep.S["water"]["dry"]): volume, area and size at a few water contents,
+    their spread below 90%, turgor, fill, cell shape, damage, and the half-conductivity check."""
+    x = d["water_fraction"]
+    V0, A0 = d["volume_um3"][0], d["wall_area_um2"][0]
+    L = mean_edge(d)
+    L0 = L[0]
     FS = (0.9, 0.8, 0.6, 0.4, 0.2)
     zero = float(x[np.argmax(d["turgor_mean_kPa"] <= 0)]) if np.any(d["turgor_mean_kPa"] <= 0) else None
-    S["dry"] = dict(
+    q = dict(
         end_fraction=float(x[-1]), time_us=float(d["time_us"][-1]), water0_pg=float(d["water_pg"][0]),
         turgor_zero_at_fraction=zero,
-        volume_at={str(f): at(f, "volume_um3") / V0 for f in FS if f >= x[-1] - 1e-3},
-        area_at={str(f): at(f, "wall_area_um2") / A0 for f in FS if f >= x[-1] - 1e-3},
+        volume_at={str(f): at(d, f, "volume_um3") / V0 for f in FS if f >= x[-1] - 1e-3},
+        area_at={str(f): at(d, f, "wall_area_um2") / A0 for f in FS if f >= x[-1] - 1e-3},
         size_at={str(f): float(np.interp(f, x[::-1], (L / L0)[::-1])) for f in FS if f >= x[-1] - 1e-3},
         below=dict(volume=float(np.ptp(d["volume_um3"][x <= 0.9]) / V0),
                    size=float(np.ptp(L[x <= 0.9]) / L0), area=float(np.ptp(d["wall_area_um2"][x <= 0.9]) / A0),
@@ -330,15 +344,34 @@ def dry(rep, S):
                                                          float(d["sphericity"][-1])],
         elongation=[float(d["elongation"][0]), float(np.nanmax(d["elongation"])), float(d["elongation"][-1])],
         broken=int(d["broken"][-1]), debonded=int(d["debonded"][-1]))
-    q = S["dry"]
     if slow is not None:
         end = max(float(slow["water_fraction"][-1]), float(x[-1])) - 1e-3
         fs = [f for f in (0.95, 0.9, 0.85, 0.8, 0.75, 0.7) if f >= end]
-        q["lp_check"] = {str(round(f, 3)): dict(turgor_fast=at(f, "turgor_mean_kPa"), turgor_slow=at(f, "turgor_mean_kPa", slow),
-                                                 volume_fast=at(f, "volume_um3") / V0,
-                                                 volume_slow=at(f, "volume_um3", slow) / V0) for f in fs}
-    T.write_csv(rep.fig("water-dry-slow.csv"), slow, list(slow), "in.tissue-dry, the same block at Lp 1e-4 to 70% water") \
-        if slow is not None else None
+        q["lp_check"] = {str(round(f, 3)): dict(turgor_fast=at(d, f, "turgor_mean_kPa"),
+                                                 turgor_slow=at(slow, f, "turgor_mean_kPa"),
+                                                 volume_fast=at(d, f, "volume_um3") / V0,
+                                                 volume_slow=at(slow, f, "volume_um3") / V0) for f in fs}
+    return q
+
+
+def dry(rep, S):
+    """Experiment 3: load, figures, measure, text."""
+    if not os.path.exists(rep.p("water-dry/tissue-dry.csv")):
+        rep.w("### 3. Drying a block", "", "Not run or failed.", "")
+        return
+    d, slow = dry_load(rep)
+    dry_figure(rep, d, slow)
+    pic = render(rep, d, S)
+    S["dry"] = dry_measure(d, slow)
+    if slow is not None:
+        T.write_csv(rep.fig("water-dry-slow.csv"), slow, list(slow),
+                    "in.tissue-dry, the same block at Lp 1e-4 to 70% water")
+    dry_text(rep, S, pic, slow is not None)
+
+
+def dry_text(rep, S, pic, slowed):
+    """The drying's text, tables and pictures."""
+    q = S["dry"]
     rep.w("### 3. Drying a block to 20% of its water", "",
           "`in.tissue-dry` after `in.tissue-inflate` on a 2x2x2 coarse block (Pi0 -364 kPa): the solutes stay in their "
           "cells (Eq. W1), water crosses the glued faces (Eqs. W2-W3) and leaves through the exposed faces only "
@@ -392,7 +425,7 @@ def dry(rep, S):
           "adhesion (or a wall rest shape that follows the water) that the model does not have; we leave it so "
           "rather than impose it by hand.", "",
           f"Data: [water-dry.csv]({rep.link('water-dry.csv')})"
-          + (f", [water-dry-slow.csv]({rep.link('water-dry-slow.csv')})" if slow is not None else "") + ".", "")
+          + (f", [water-dry-slow.csv]({rep.link('water-dry-slow.csv')})" if slowed else "") + ".", "")
 
 
 def section(rep):
