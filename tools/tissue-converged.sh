@@ -14,10 +14,15 @@
 #   BLOCK="3 3 3" STRAIN=0.15 RESPA=5 NAME=tissue-quasistatic-27 REPORT=docs bash tools/tissue-converged.sh
 #                                                  # the 27-cell block (~75 min on 2 cores; respa 5
 #                                                  # past rupture: docs/Howto_plates.rst)
-# Environment: OUT (run folder), BLOCK (cells along x y z, "2 2 2"), V (fast speed, m/s, default
-# 0.5), STRAIN (0.2), RESPA (inner wall steps per fluid step, in.tissue-compress -var respa; 1),
+#   EXP=tension OUT=results/tissue-converged REPORT=docs bash tools/tissue-converged.sh
+#                                                  # the same blocks pulled apart (in.tissue-tension)
+#                                                  # at 0.0625 and 0.125 m/s to 8% strain:
+#                                                  # docs/tissue-tension-quasistatic.md
+# Environment: EXP (compress or tension: in.tissue-EXP, stages EXP-PI-LAM-V; the inflations are
+# shared), OUT (run folder), BLOCK (cells along x y z, "2 2 2"), V (fast speed, m/s, default
+# 0.5, tension 0.125: it converges only at 0.0625 m/s, docs/Howto_tissue.rst), STRAIN (0.2, tension 0.08), RESPA (inner wall steps per fluid step, in.tissue-compress -var respa; 1),
 # NP (MPI ranks per run, 1), JOBS (runs at a time, 2), NAME (the report's file name,
-# tissue-quasistatic), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
+# tissue-quasistatic, tension: tissue-tension-quasistatic), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
 # PIS (turgors, default "-100 -364 -600"), SPEEDS (default "V/2 V"). A condition that has not
 # converged gets the next rung into the same folder, e.g.
 #   OUT=... PIS=-100 SPEEDS=0.125 ONLY="compress-100-strong-0.125 compress-100-weak-0.125 report"
@@ -29,13 +34,20 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 [ -f "$here/build/cellmech-env.sh" ] || bash "$here/tools/setup.sh"
 source "$here/build/cellmech-env.sh"
 source "$here/tools/common.sh"
-V=${V:-0.5}
-STRAIN=${STRAIN:-0.2}
+EXP=${EXP:-compress}
+case $EXP in
+  compress) V=${V:-0.5}; STRAIN=${STRAIN:-0.2}; NAME=${NAME:-tissue-quasistatic} ;;
+  tension) V=${V:-0.125}; STRAIN=${STRAIN:-0.08}; NAME=${NAME:-tissue-tension-quasistatic} ;;
+  *) echo "tissue-converged.sh: EXP=$EXP: expected compress or tension" >&2; exit 1 ;;
+esac
 BLOCK=${BLOCK:-"2 2 2"}
 RESPA=${RESPA:-1}
+if [ "$EXP" = tension ] && [ "$RESPA" != 1 ]; then
+  echo "tissue-converged.sh: RESPA=$RESPA: in.tissue-tension runs on one level (respa is not safe past the lamella's first failures)" >&2
+  exit 1
+fi
 NP=${NP:-1}
 JOBS=${JOBS:-2}
-NAME=${NAME:-tissue-quasistatic}
 out=$(realpath -m "${OUT:-$here/results/tissue-converged}")
 report=${REPORT:-$out}
 [ "$report" = docs ] && report=$here/docs
@@ -77,17 +89,23 @@ comp() {  # PI LAM SPEED
     -var lamf 1.04 -var vplate "$3" -var strain "$STRAIN" -var respa "$RESPA" -var every 200 -var tabevery 4000 \
     -var leakevery 0
 }
+pull() {  # PI LAM SPEED
+  lmp -in "$INPUTS/in.tissue-tension" -screen none -var dir "$INPUTS" \
+    -var restart "$out/inflate$1-$2/block.restart" -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" \
+    -var lamf 1.04 -var vpull "$3" -var strain "$STRAIN" -var every 200 -var tabevery 4000
+}
+declare -A run_of=([compress]=comp [tension]=pull)
 half=$($py -c "print($V / 2)")
 SPEEDS=${SPEEDS:-"$half $V"}
 for v in $SPEEDS; do for pi in $PIS; do for lam in strong weak; do
-  bg "compress$pi-$lam-$v" comp "$pi" "$lam" "$v"
+  bg "$EXP$pi-$lam-$v" "${run_of[$EXP]}" "$pi" "$lam" "$v"
 done; done; done
 wait
-# what ran, appended for each call that compressed (the report prints it)
-if [ -z "${ONLY:-}" ] || [[ "$ONLY" == *compress* ]]; then
-  echo "BLOCK='$BLOCK' STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
+# what ran, appended for each call that compressed or pulled (the report prints it)
+if [ -z "${ONLY:-}" ] || [[ "$ONLY" == *"$EXP"* ]]; then
+  echo "$([ "$EXP" = tension ] && echo 'EXP=tension ')BLOCK='$BLOCK' STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
 fi
 if want report; then
   mkdir -p "$report"
-  (cd "$here/tools" && $py -m cellmech.tissue.converged "$out" "$report" "$NAME")
+  (cd "$here/tools" && $py -m cellmech.tissue.converged "$out" "$report" "$NAME" "$EXP")
 fi

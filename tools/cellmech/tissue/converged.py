@@ -1,23 +1,25 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The report of tools/tissue-converged.sh (issue 29): tissue compression at converged plate speeds,
-side by side with parenchyma measurements.
+"""The report of tools/tissue-converged.sh (issue 29): tissue compression, or tension, at converged
+plate (grip) speeds, side by side with parenchyma measurements.
 
-  python3 -m cellmech.tissue.converged RUNS REPORT [NAME]
+  python3 -m cellmech.tissue.converged RUNS REPORT [NAME [KIND]]
 
-RUNS holds the generated block's statistics (gen/block.json), compress{PI}-{LAM}-{SPEED}/
-tissue-compress.dat and the run settings (run-info.txt);
+KIND: compress (default) or tension (KINDS below says what differs). RUNS holds the generated
+block's statistics (gen/block.json), KIND{PI}-{LAM}-{SPEED}/tissue-KIND.dat and the run settings
+(run-info.txt);
 each condition is judged on the two slowest speeds it has that differ by a factor of 2 (the
 ladder's last rungs: v against 2v). REPORT gets NAME.md and NAME.png (NAME: tissue-quasistatic).
 Per condition: the
 quasi-static check (cellmech.quasistatic) of the slow run from 2% strain to its first wall rupture,
 the slow curve against the fast one over the same range (rate evidence), the modulus (slope of a
-straight line through the stress over MODULUS_WINDOW), the failure stress (peak of the stress over
+straight line through the stress over its window, KINDS), the failure stress (peak of the stress over
 1% strain windows), the strain there, the first rupture and debond, and the failure mode
 (tissuedata.failure: which kind of event begins first). Each number comes from the slow run; a row
 whose checks fail says so in its verdict column.
 """
 import os
 import sys
+from dataclasses import dataclass
 
 import matplotlib
 import numpy as np
@@ -31,10 +33,42 @@ from .tissuedata import COMPRESS, and_list, failure, fmt, gen_stats, load, span 
 
 PIS = (-100, -364, -600)
 LAMELLAE = tuple(params.lamellae())   # the named lamellae: strong, weak
-# past the plates' first contacts with the block's domed faces (at Pi -100 kPa the 2-4% window is
-# still dynamic at 0.25 m/s: the flaccid block carries little load there), before any cell fails
-MODULUS_WINDOW = (0.04, 0.06)
-FROM = 0.02
+
+
+@dataclass(frozen=True)
+class Kind:
+    """What differs between the experiments the report judges."""
+    stage: str          # run folders STAGE{PI}-{LAM}-{SPEED}/ with tissue-STAGE.dat, in.tissue-STAGE
+    window: tuple       # the modulus window (strain)
+    start: float        # the checks start here (strain)
+    width: float        # the checks' strain windows
+    to_peak: bool       # the checks end at the peak stress: past it the lamella lets go faster than
+                        # any grip moves, so only the rise to the failure can be quasi-static
+    title: str
+    did: str            # what was done to the block, for the summary
+    ends: str           # the plates or the grips, in the tables' words
+    protocol: str       # the input and its start, for the summary
+    versus: str         # this loading against the measurements' (mostly tension)
+
+
+KINDS = {
+    # past the plates' first contacts with the block's domed faces (at Pi -100 kPa the 2-4% window is
+    # still dynamic at 0.25 m/s: the flaccid block carries little load there), before any cell fails
+    "compress": Kind("compress", (0.04, 0.06), 0.02, Q.WINDOW, False, "Tissue compression at converged plate speeds",
+                     "compressed to failure", "plates",
+                     "the quasi-static protocol of `in.tissue-compress` (docs/Howto_plates.rst, \"A protocol that "
+                     "reaches quasi-static\"): at rest first, both plates closing after a smooth start",
+                     "a compression here, mostly tension there"),
+    # the grips hold the block from the start; their smooth start takes the first 1% of strain, and
+    # the weak lamella's peak comes at about 3% (docs/Howto_tissue.rst "Tension"), so the windows
+    # are 1% wide and the modulus is read over 1-2%
+    "tension": Kind("tension", (0.01, 0.02), 0.005, 0.01, True, "Tissue tension at converged grip speeds",
+                    "pulled apart to failure", "grips",
+                    "`in.tissue-tension` (docs/Howto_tissue.rst, \"Tension\"): the wall nodes near its bottom "
+                    "and top gripped, at rest in the grips first, both grips moving apart after a smooth start",
+                    "a tension here and there"),
+}
+KIND = KINDS["compress"]          # the kind being reported: main() sets it from its KIND argument
 
 # Parenchyma measurements (orders of magnitude, as the sources report them)
 LITERATURE = [
@@ -82,25 +116,27 @@ def measure(slow, fast):
     f, ff = failure(slow), failure(fast)
     end = float(slow["strain"].max())
     hi = min(f["first"].get("wall rupture", end), ff["first"].get("wall rupture", end))
-    bal, en, _, v = Q.check(slow, FROM, hi, half=None)
-    rate = Q.rate_difference(fast, slow, FROM, hi)
+    if KIND.to_peak:
+        hi = min(hi, f["strain_at_peak"])
+    bal, en, _, v = Q.check(slow, KIND.start, hi, half=None, width=KIND.width)
+    rate = Q.rate_difference(fast, slow, KIND.start, hi, width=KIND.width)
     worst = max((abs(r.difference) for r in rate if r.difference is not None), default=float("nan"))
     start = converged_from(bal, rate)
     # a modulus only of the intact block: its window ends before the first rupture
-    intact = MODULUS_WINDOW[1] <= hi
+    intact = KIND.window[1] <= hi
     # the failure has converged when both speeds first rupture (or first debond) within 1% strain;
-    # a wall that ruptured before FROM burst under its own turgor (at the inflation or the plates'
+    # a wall that ruptured before KIND.start burst under its own turgor (at the inflation or the plates'
     # first touch): that is no compression failure, and its peak no failure stress
     first = [min(g["first"].values()) if g["first"] else end for g in (f, ff)]
-    burst = f["first"].get("wall rupture", end) < FROM
+    burst = f["first"].get("wall rupture", end) < KIND.start
     # a peak in the record's last 1% strain may be no peak: the stress was still rising at its end
     rising = f["strain_at_peak"] >= end - 0.01
-    return dict(P0=float(slow["P_mean_kPa"][0]), E=modulus(slow, *MODULUS_WINDOW) if intact else float("nan"),
+    return dict(P0=float(slow["P_mean_kPa"][0]), E=modulus(slow, *KIND.window) if intact else float("nan"),
                 fail=f, fail_fast=ff, failure_converged=not burst and not rising and abs(first[0] - first[1]) <= 0.01,
                 burst=burst, rising=rising,
                 balance=v.numbers.get("balance"), ke=v.numbers.get("ke_over_work"), rate=worst,
-                start=start, judged=(FROM, hi),
-                converged=intact and start is not None and start <= MODULUS_WINDOW[0],
+                start=start, judged=(KIND.start, hi),
+                converged=intact and start is not None and start <= KIND.window[0],
                 verdict=("quasi-static" if v.quasistatic else "dynamic: " + ", ".join(v.failed))
                 + ("" if worst <= Q.TOL_RATE else "; curve moves with the speed"))
 
@@ -129,13 +165,15 @@ def load_runs(runs):
     out = {}
     for pi in PIS:
         for lam in LAMELLAE:
-            tag = f"compress{pi}-{lam}-"
+            tag = f"{KIND.stage}{pi}-{lam}-"
+            rec = f"tissue-{KIND.stage}.dat"
             speeds = sorted(float(n[len(tag):]) for n in os.listdir(runs)
-                            if n.startswith(tag) and os.path.exists(f"{runs}/{n}/tissue-compress.dat"))
+                            if n.startswith(tag) and os.path.exists(f"{runs}/{n}/{rec}"))
             pairs = [(a, b) for a in speeds for b in speeds if abs(b - 2 * a) < 1e-9]
             if pairs:
                 a, b = pairs[0]
-                recs = [load(f"{runs}/{tag}{s:g}/tissue-compress.dat", COMPRESS) for s in (a, b)]
+                recs = [load(f"{runs}/{tag}{s:g}/{rec}", COMPRESS if KIND.stage == "compress" else TENSION)
+                        for s in (a, b)]
                 notes = [f"the run at {s:g} m/s stopped at {rec['strain'].max():.1%} strain: {err}"
                          for s, rec in zip((a, b), recs) if (err := stopped(f"{runs}/{tag}{s:g}"))]
                 out[pi, lam] = (a, *recs, notes)
@@ -143,9 +181,10 @@ def load_runs(runs):
 
 
 def run_settings(runs, pi, lam, v):
-    """The effective settings of the compression of condition (pi, lam) at speed v (its
-    settings.json; for a run older than it, the input's defaults with the named lamella)."""
-    return params.run_settings(f"{runs}/compress{pi}-{lam}-{v:g}", "in.tissue-compress", params.lamellae()[lam])
+    """The effective settings of the run of condition (pi, lam) at speed v (its settings.json; for
+    a run older than it, the input's defaults with the named lamella)."""
+    return params.run_settings(f"{runs}/{KIND.stage}{pi}-{lam}-{v:g}", f"in.tissue-{KIND.stage}",
+                               params.lamellae()[lam])
 
 
 def lamella_settings(runs, data):
@@ -168,9 +207,10 @@ def figure(data, lams, path):
             ax.plot(fast["strain"], fast["stress_kPa"], color=c, lw=0.8, ls="--", label=f"Pi {pi} kPa, {2 * v:g} m/s")
         if lam in lams:
             ax.set_title(f"{lam} lamella (sigl {lams[lam]['sigl']:g} kPa, Gc {lams[lam]['Gl'] / 1000:g} J/m^2)", fontsize=10)
-        ax.set_xlabel("strain (closing of the plates / initial height)")
+        ax.set_xlabel("strain (closing of the plates / initial height)" if KIND.stage == "compress"
+                      else "strain (opening of the grips / initial height)")
         ax.legend(fontsize=7)
-    axes[0].set_ylabel("stress (top plate force / initial cross-section, kPa)")
+    axes[0].set_ylabel(f"stress (top {KIND.ends[:-1]} force / initial cross-section, kPa)")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
 
@@ -179,15 +219,20 @@ def pct(x):
     return "-" if x is None or not np.isfinite(x) else f"{x:.1%}"
 
 
+def strain_pct(x):
+    """A strain as a percentage with no needless decimal: 2%, 0.5%."""
+    return f"{x:.0%}" if abs(x * 100 - round(x * 100)) < 1e-9 else f"{x:.1%}"
+
+
 def judged(m):
     lo, hi = m["judged"]
-    return f"{lo:.0%}-{hi:.1%}" if hi > lo else "-"
+    return f"{strain_pct(lo)}-{hi:.1%}" if hi > lo else "-"
 
 
 def table(rows):
-    head = (f"| Pi (kPa) | lamella | speed v (m/s) | P at start (kPa) | modulus {MODULUS_WINDOW[0]:.0%}-"
-            f"{MODULUS_WINDOW[1]:.0%} (kPa) | failure stress (kPa) | strain at peak | first rupture (v; 2v) | "
-            f"first debond | failure mode | judged | plates (worst) | KE/W (worst) | vs 2v (worst) | "
+    head = (f"| Pi (kPa) | lamella | speed v (m/s) | P at start (kPa) | modulus {KIND.window[0]:.0%}-"
+            f"{KIND.window[1]:.0%} (kPa) | failure stress (kPa) | strain at peak | first rupture (v; 2v) | "
+            f"first debond | failure mode | judged | {KIND.ends} (worst) | KE/W (worst) | vs 2v (worst) | "
             "converged from |\n|" + "---|" * 15)
     lines = [head]
     for (pi, lam), m in rows.items():
@@ -223,7 +268,7 @@ def compare(rows):
              f"reaches the low end of the measured 1-20 MPa and lies up to {fmt(top, 2)} times below its top")
     return (f"The model's modulus, {span(E)} kPa, {where}, and its failure stress, "
             f"{span(peak)} kPa, {span([300 / p for p in peak])} "
-            f"times below apple's 0.3 MPa (a compression here, mostly tension there).")
+            f"times below apple's 0.3 MPa ({KIND.versus}).")
 
 
 def turgor_trend(rows):
@@ -285,16 +330,16 @@ def summary(rows, gen, lams, lamf):
     pis = sorted({pi for pi, _ in rows}, reverse=True)
     speeds = sorted({m["v"] for m in rows.values()})
     ran = (f"{block_words(gen)}, glued by the middle lamella, was inflated at Pi "
-           f"{and_list(map(str, pis))} kPa with {lamella_words(lams)}, then compressed to failure "
-           f"(walls rupture at the paper's critical stretch {lamf:g}) with the quasi-static protocol of "
-           "`in.tissue-compress` (docs/Howto_plates.rst, \"A protocol that reaches quasi-static\"): at rest first, "
-           f"both plates closing after a smooth start, at v = {and_list(f'{v:g}' for v in speeds)} m/s (the "
+           f"{and_list(map(str, pis))} kPa with {lamella_words(lams)}, then {KIND.did} "
+           f"(walls rupture at the paper's critical stretch {lamf:g}) with {KIND.protocol}, "
+           f"at v = {and_list(f'{v:g}' for v in speeds)} m/s (the "
            "speed column) and, as the rate evidence, at 2v (the ladder's last two rungs).")
-    passed = (f"The modulus converged in {len(conv)} of {len(rows)} conditions (plates within 5% and the curve "
-              f"within 5% of twice the speed in every 2% window from the modulus window on, the block still intact)"
+    passed = (f"The modulus converged in {len(conv)} of {len(rows)} conditions ({KIND.ends} within 5% and the curve "
+              f"within 5% of twice the speed in every {strain_pct(KIND.width)} window from the modulus window "
+              f"{'to the peak' if KIND.to_peak else 'on'}, the block still intact)"
               + (f": {span(Es)} kPa." if conv else ".")
               + f" The failure converged in {len(fconv)} (the first rupture or debond at both speeds within 1% "
-              f"strain, the walls intact at {FROM:.0%})" + (f": failure stress {span(peaks)} kPa." if fconv else "."))
+              f"strain, the walls intact at {KIND.start:.0%})" + (f": failure stress {span(peaks)} kPa." if fconv else "."))
     return " ".join(x for x in (ran, passed, f"First failure: {modes_words(rows)}.", compare(rows),
                                 "Every number is from the run at v; a condition that has not converged is a rate "
                                 "study, and its row says so.") if x)
@@ -303,7 +348,7 @@ def summary(rows, gen, lams, lamf):
 def text(rows, info, gen, name, lams):
     lamf = next(iter(lams.values()))["lamf"]
     lit = "\n".join(f"| {a} | {b} | {c} |" for a, b, c in LITERATURE)
-    return f"""# Tissue compression at converged plate speeds
+    return f"""# {KIND.title}
 
 *Generated by `tools/tissue-converged.sh` ({info}); do not edit by hand.*
 
@@ -313,19 +358,19 @@ def text(rows, info, gen, name, lams):
 
 {table(rows)}
 {stopped_text(rows)}
-*Modulus*: slope of a straight line through the stress over {MODULUS_WINDOW[0]:.0%}-{MODULUS_WINDOW[1]:.0%}
+*Modulus*: slope of a straight line through the stress over {KIND.window[0]:.0%}-{KIND.window[1]:.0%}
 strain. *Failure stress*: the peak of the stress over 1% strain windows, with its strain. *First
 rupture*: at both speeds; where they differ, the failure strain has not converged with the speed
 (the checks end at the earlier one: past it the two curves part by the timing of the events).
 *Failure mode*: which kind of failure begins first, wall rupture (a tether breaks) or lamella
-debonding (a lamella bond lets go); *burst before loading*: a wall ruptured before {FROM:.0%} strain,
+debonding (a lamella bond lets go); *burst before loading*: a wall ruptured before {strain_pct(KIND.start)} strain,
 under the cell's own turgor (the inflated wall's stretch near the critical 1.04), so the block had
-failed before the plates loaded it, and its row gives no failure stress; *> X*: the stress was still
+failed before the {KIND.ends} loaded it, and its row gives no failure stress; *> X*: the stress was still
 rising at the record's end, so X bounds the failure stress from below and the row's failure has not
-converged. *Judged*: from 2% strain to the first rupture of either run.
-*Plates*: the largest (F_top - F_bottom) / mean over 2% windows there; *KE/W*: the largest kinetic
-energy against the plates' work (printed, not judged); *vs 2v*: the largest difference of the
-window-mean plate force between the two speeds. *Converged from*: the strain from which every 2%
+converged. *Judged*: from {strain_pct(KIND.start)} strain to the first rupture of either run{' or the peak stress of the run at v, whichever comes first' if KIND.to_peak else ''}.
+*{KIND.ends.capitalize()}*: the largest (F_top - F_bottom) / mean over {strain_pct(KIND.width)} windows there; *KE/W*: the largest kinetic
+energy against the {KIND.ends}' work (printed, not judged); *vs 2v*: the largest difference of the
+window-mean {KIND.ends[:-1]} force between the two speeds. *Converged from*: the strain from which every {strain_pct(KIND.width)}
 window balances within 5% and agrees with 2v within 5%; a condition counts as converged when
 that is at or below the modulus window (no modulus where the block has ruptured before the window
 ends).
@@ -350,11 +395,10 @@ What the model gives, and why it differs:
 * **Bruise volume per impact energy** is not here: the impacts are dynamic by nature and stay in
   docs/tissue.md (in.tissue-impact), labelled as such.
 
-The same report for the 2x2x2 block is docs/tissue-quasistatic.md, for the 27-cell block
-docs/tissue-quasistatic-27.md (`tools/tissue-converged.sh` says how each is made). Not yet held
-(issue 29, item 4): a random Laguerre block at converged rates, and the tension matrix
-(in.tissue-tension converges only at 0.0625 m/s over the rise to the peak for the 2x2x2 block with
-the weak lamella: docs/Howto_tissue.rst "Tension").
+The compression reports are docs/tissue-quasistatic.md (the 2x2x2 block) and
+docs/tissue-quasistatic-27.md (the 27-cell block), the tension report of the 2x2x2 block
+docs/tissue-tension-quasistatic.md (`tools/tissue-converged.sh` says how each is made). Not yet held
+(issue 29, item 4): a random Laguerre block at converged rates, and the 27-cell block in tension.
 
 ## References
 
@@ -371,9 +415,14 @@ def surface(gen):
 
 
 def main(argv=None):
+    global KIND
     args = argv or sys.argv[1:]
     runs, report = args[:2]
     name = args[2] if len(args) > 2 else "tissue-quasistatic"
+    kind = args[3] if len(args) > 3 else "compress"
+    if kind not in KINDS:
+        raise SystemExit(f"converged: KIND {kind}: expected one of {', '.join(KINDS)}")
+    KIND = KINDS[kind]
     data = load_runs(runs)
     if not data:
         raise SystemExit(f"converged: no condition with runs at v and 2v in {runs}")
