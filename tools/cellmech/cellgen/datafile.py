@@ -56,7 +56,7 @@ def _header_line(data, words):
 
 def read_data(path):
     """Read a LAMMPS data file into a DataFile."""
-    data, section = DataFile(box=[0.0] * 6), None
+    data, section = DataFile(box=[-0.5, 0.5] * 3), None    # LAMMPS's box when the file gives none
     with open(path) as f:
         data.title = f.readline().rstrip("\n")
         for line in f:
