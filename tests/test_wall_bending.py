@@ -35,6 +35,7 @@ import os
 import numpy as np
 
 import lmptest as T
+from cellmech.cellgen.datafile import read_data, write
 
 G, T0 = 8.0e5, 0.126
 D = G * T0 ** 3 / 3.0
@@ -223,8 +224,7 @@ write_dump      all custom restart.dump id x y z vx vy vz modify sort id format 
 def bad_input(d):
     base = setup("cell2.data")
     # the first hinge i-j-k-l of the data file, its node i moved onto the middle of its edge j-k
-    text = open(os.path.join(d, "cell2.data")).read().split("Dihedrals")[1].split("\n")
-    i, j, k = [int(v) for v in next(l for l in text if l.strip()).split()[2:5]]
+    i, j, k = [int(v) for v in read_data(os.path.join(d, "cell2.data")).rows("Dihedrals")[0][2:5]]
     collapse = (f"set atom {i} x $((x[{j}]+x[{k}])/2) y $((y[{j}]+y[{k}])/2) "
                 f"z $((z[{j}]+z[{k}])/2)\nrun 0\n")
     bad = {
@@ -246,20 +246,10 @@ def bad_input(d):
 
 def read_topology(path):
     """Reference positions by ID, and the triangles, tethers and hinges of a data file."""
-    ref, sec, out = {}, None, {"Angles": [], "Bonds": [], "Dihedrals": []}
-    for line in open(path):
-        s = line.split("#")[0].strip()
-        if not s:
-            continue
-        if s[0].isalpha():
-            sec = s.split()[0]
-            continue
-        w = s.split()
-        if sec == "cell" and len(w) >= 7:
-            ref[int(w[0])] = np.array([float(w[4]), float(w[5]), float(w[6])])
-        elif sec in out:
-            out[sec].append(tuple(int(v) for v in w[2:]))
-    return ref, out["Angles"], out["Bonds"], out["Dihedrals"]
+    data = read_data(path)
+    ref = {int(w[0]): np.array([float(v) for v in w[4:7]]) for w in data.rows("cell")}
+    return ref, *([tuple(int(v) for v in w[2:]) for w in data.rows(k)]
+                  for k in ("Angles", "Bonds", "Dihedrals"))
 
 
 def hinges_follow_failure(d):
@@ -299,13 +289,10 @@ def hinges_follow_failure(d):
         keep = [h for h in hinges if key(*h[:3]) not in gone[wall] and key(*h[1:]) not in gone[wall]]
         # the energy of exactly the hinges that should be left, at the same positions: a data file
         # with only those, and no failure
-        text = open(os.path.join(d, "cellb.data")).read()
-        head, tail = text.split("Dihedrals\n\n")
-        head = head.replace(f"{len(hinges)} dihedrals", f"{len(keep)} dihedrals")
-        rest = tail.split("\n\n", 1)
-        body = "".join(f"{n + 1} 1 {' '.join(map(str, h))}\n" for n, h in enumerate(keep))
-        with open(os.path.join(d, "keep.data"), "w") as f:
-            f.write(head + "Dihedrals\n\n" + body + ("\n" + rest[1] if len(rest) > 1 else ""))
+        data = read_data(os.path.join(d, "cellb.data"))
+        data.counts["dihedrals"] = len(keep)
+        data.sections["Dihedrals"] = [[n + 1, 1, *h] for n, h in enumerate(keep)]
+        write(os.path.join(d, "keep.data"), data)
         _, log = T.lmp(base.format(data="keep.data", styles=styles[wall].format(lamf="")) + deform +
                        'run 0\nprint "EB $(edihed:%.17g) $(dihedrals)"\n', cwd=d, log=f"log.keep-{wall}")
         eb_expect = float(last(log, "EB")[1])
