@@ -659,7 +659,7 @@ def wall_times(R):
         if k in R.times:
             sec, st = R.times[k]
             total += sec
-            fb = f" (report uses the coarse run)" if k in R.used_fallback else ""
+            fb = " (report uses the coarse run)" if k in R.used_fallback else ""
             L.append(f"| {k} | {sec} | {st}{fb} |")
         else:
             fb = R.fb_times.get(k)
