@@ -105,7 +105,7 @@ run_setting = rp.run_setting
 fmt = rp.fmt
 pct = rp.change
 
-# the quantities whose shear stress the paper gives (Pa / 1000, at eps = 4%)
+# the impact-zone shear stress the paper gives (kPa, at eps = 4%) per (cell, viscosity mPa s)
 PAPER_TAU = {("stiff", 1): 0.25, ("stiff", 10): 2.45, ("stiff", 1000): 180.0}
 FAILURES = (("qs", "failure-qs"), ("impact-1", "failure-impact-1"), ("impact-1000", "failure-impact-1000"))
 
