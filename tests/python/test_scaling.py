@@ -89,3 +89,26 @@ def test_work_imbalance_sees_the_pair_time():
     assert scaling.work_imbalance(r) == pytest.approx(20990 / 14555, rel=1e-15)
     r["nlocal"] = (100.0, 100.0, 100.0)
     assert scaling.work_imbalance(r) == pytest.approx(1.4546 / 1.053, rel=1e-15)
+
+
+def _log(loop, ranks, atoms, nghost):
+    return (LOG.replace("6.60278 on 2 procs", f"{loop} on {ranks} procs").replace("29110 atoms", f"{atoms} atoms")
+            .replace("Nghost:          828.5", f"Nghost:          {nghost}") + "ghost atom cutoff = 9.6\n")
+
+
+def test_report_opens_with_a_summary_of_the_measured_and_projected_efficiency(tmp_path):
+    import json
+    for case, cells, one, two in (("block2", 8, 4.0, 2.5), ("block3", 27, 13.0, 7.0)):
+        json.dump(dict(cells=cells, neighbours_mean=3.0 if cells == 8 else 4.0, box_volume=3e4 * cells),
+                  open(tmp_path / f"{case}.json", "w"))
+        (tmp_path / f"log.{case}.1.0").write_text(_log(one, 1, 1100 * cells, 0))
+        (tmp_path / f"log.{case}.2.0").write_text(_log(two, 2, 1100 * cells, 300 * cells ** (2 / 3)))
+    text = scaling.report(str(tmp_path), 1000, 300, 500, "0", "x", load_after="0")
+    lines = text.split("\n")
+    print("\n".join(lines[:4]))
+    assert lines[0] == "# Tissue benchmark" and lines[2].startswith("**Summary.** ")
+    # the measured efficiencies: 4 / 2.5 / 2 = 80% (block2) and 13 / 7 / 2 = 93% (block3)
+    assert "runs from 80% (block2, 2 ranks, balance off) to 93% (block3, 2 ranks, balance off)" in lines[2]
+    rows = [ln for ln in lines if ln.startswith("| 64 |") or ln.startswith("| 256 |")]
+    assert f"{rows[0].split(' | ')[-1].rstrip(' |')} on 64 ranks and {rows[1].split(' | ')[-1].rstrip(' |')} on 256" \
+        in lines[2]

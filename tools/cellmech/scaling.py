@@ -10,6 +10,8 @@ of the force field, HALO_DOUBLES per ghost atom) and joins the global reductions
 import math
 import re
 
+from . import reporting as rp
+
 SECTIONS = ("Pair", "Bond", "Neigh", "Comm", "Output", "Modify")
 
 # Halo exchanges of one step of the tissue force field, doubles per ghost atom: positions and
@@ -120,74 +122,131 @@ def _pct(run, name):
 def report(work, steps, warm, settle, load_before, lammps, load_after=None):
     """The markdown report of a benchmark-tissue.sh work folder: runs log.CASE.NP.BALANCE, data
     statistics CASE.json (cellgen.py tissue --stats)."""
+    runs, stats = load_work(work)
+    if load_after is None:
+        with open("/proc/loadavg") as f:
+            load_after = " ".join(f.read().split()[:3])
+    blocks = sorted((c for c in stats if c.startswith("block")), key=lambda c: stats[c]["cells"])
+    order = blocks + sorted(c for c in stats if not c.startswith("block"))
+    out = measured_table(runs, stats, order, steps, warm, settle, load_before, load_after, lammps)
+    out += per_rank_table(runs, order)
+    # ---- the projection
+    fit = [(stats[c]["neighbours_mean"], runs[(c, 1, "0")]["loop"] / runs[(c, 1, "0")]["steps"] / stats[c]["cells"])
+           for c in blocks if stats[c]["cells"] > 1 and (c, 1, "0") in runs]
+    pair = [c for c in blocks if stats[c]["cells"] > 1 and (c, 1, "0") in runs and (c, 2, "0") in runs]
+    projected = {}
+    if len(fit) < 2 or not pair:
+        out += ["", "(no projection: it needs two blocks of more than one cell on 1 rank and one on 2 ranks)"]
+    else:
+        lines, projected = projection(work, runs, stats, fit, pair)
+        out += lines
+        out += ["", "Reproduce with `bash tools/benchmark-tissue.sh -r 3 -o docs/tissue-benchmark.md` (about 8 "
+                "minutes on 2 cores). What the figures say: docs/performance.md, section \"Tissues on MPI\"."]
+    out[2:2] = [summary(runs, stats, order, steps, projected), ""]
+    return "\n".join(out) + "\n"
+
+
+def summary(runs, stats, order, steps, projected):
+    """The report's opening paragraph in plain words: what ran, the measured 2-rank efficiencies,
+    the projection's efficiencies on the InfiniBand network."""
+    cases = sorted(stats, key=order.index)
+    ranks = sorted({k[1] for k in runs})
+    sizes = ", ".join(f"{c}: {stats[c]['cells']} cell{'' if stats[c]['cells'] == 1 else 's'}" for c in cases)
+    said = [f"Each of {len(cases)} tissues ({sizes}) ran "
+            f"{steps} timed steps on {' and '.join(str(r) for r in ranks)} MPI rank(s)."]
+    eff = {k: runs[(k[0], 1, "0")]["loop"] / r["loop"] / k[1] for k, r in runs.items()
+           if k[1] > 1 and (k[0], 1, "0") in runs}
+    if eff:
+        lo, hi = min(eff, key=eff.get), max(eff, key=eff.get)
+        said.append(f"On more ranks than one, the parallel efficiency measured here runs from {100 * eff[lo]:.0f}% "
+                    f"({lo[0]}, {lo[1]} ranks, balance {_bal_name(lo[2])}) to {100 * eff[hi]:.0f}% "
+                    f"({hi[0]}, {hi[1]} ranks, balance {_bal_name(hi[2])}).")
+    if projected:
+        said.append("The model projects a 1000-cell tissue to " + " and ".join(
+            f"{100 * e:.0f}% on {P} ranks" for P, e in sorted(projected.items()))
+            + " on an InfiniBand-like network (a projection, not a measurement; its assumptions below).")
+    said.append("A benchmark has no pass or fail: the numbers are measurements of this machine under the load "
+                "stated below.")
+    return rp.summary(*said)
+
+
+def load_work(work):
+    """{(case, ranks, balance): parse_log} of the folder's logs and {case: statistics}."""
     import glob
     import json
     import os
-    import numpy as np
     runs, stats = {}, {}
     for path in glob.glob(os.path.join(work, "log.*")):
         _, case, np_, bal = os.path.basename(path).split(".", 3)
         runs[(case, int(np_), bal)] = parse_log(open(path).read())
         stats[case] = json.load(open(os.path.join(work, case + ".json")))
-    if load_after is None:
-        with open("/proc/loadavg") as f:
-            load_after = " ".join(f.read().split()[:3])
-    cpu = "?"
+    return runs, stats
+
+
+def cpu_name():
     with open("/proc/cpuinfo") as f:
         for line in f:
             if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    bal_name = lambda b: "off" if b == "0" else b
+                return line.split(":", 1)[1].strip()
+    return "?"
+
+
+def _bal_name(b):
+    return "off" if b == "0" else b
+
+
+def measured_table(runs, stats, order, steps, warm, settle, load_before, load_after, lammps):
+    """The report's head and the table of every run measured."""
+    import os
     out = ["# Tissue benchmark", "",
-           f"machine: {os.cpu_count()} cores, {cpu}; load before the runs {load_before}, after {load_after}; "
+           f"machine: {os.cpu_count()} cores, {cpu_name()}; load before the runs {load_before}, after {load_after}; "
            f"LAMMPS {lammps}",
            f"each case: in.tissue-inflate's {warm} steps of inflation (Lp 10, Pi -364 kPa) and {settle} of its "
            f"settle, then {steps} timed steps (dt 0.001 us). neighbours/cell: glued neighbour cells (6 inside a "
            "large block); speed-up and efficiency: against the same case on one rank; imbalance: most "
            "particles on a rank over the mean (LAMMPS's Nlocal); builds: neighbour-list builds in the timed "
-           "steps; the sections: % of the loop time, averaged over the ranks", "",
-           "| case | cells | neighbours/cell | atoms | ranks | balance | particle-steps/s | cell-steps/s | "
-           "speed-up | efficiency | imbalance | builds | Pair % | Bond % | Neigh % | Comm % | Modify % |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    blocks = sorted((c for c in stats if c.startswith("block")), key=lambda c: stats[c]["cells"])
-    order = blocks + sorted(c for c in stats if not c.startswith("block"))
+           "steps; the sections: % of the loop time, averaged over the ranks", ""]
+    out += rp.table(["case", "cells", "neighbours/cell", "atoms", "ranks", "balance", "particle-steps/s",
+                     "cell-steps/s", "speed-up", "efficiency", "imbalance", "builds", "Pair %", "Bond %",
+                     "Neigh %", "Comm %", "Modify %"])
     for (case, np_, bal) in sorted(runs, key=lambda k: (order.index(k[0]), k[1], k[2])):
         r, st = runs[(case, np_, bal)], stats[case]
         cells = st["cells"]
         one = runs.get((case, 1, "0"))
         su = one["loop"] / r["loop"] if one else float("nan")
         out.append(f"| {case} | {cells} | {st['neighbours_mean'] if cells > 1 else 0:.2g} | {r['atoms']} | "
-                   f"{np_} | {bal_name(bal)} | {r['atoms'] * r['steps'] / r['loop']:.3g} | "
+                   f"{np_} | {_bal_name(bal)} | {r['atoms'] * r['steps'] / r['loop']:.3g} | "
                    f"{cells * r['steps'] / r['loop']:.4g} | {su:.2f} | {100 * su / np_:.0f}% | "
                    f"{imbalance(r):.3f} | {r['builds']} | "
                    + " | ".join(f"{_pct(r, k):.1f}" for k in ("Pair", "Bond", "Neigh", "Comm", "Modify")) + " |")
+    return out
+
+
+def per_rank_table(runs, order):
+    """The timing sections of every run on more than one rank, min / avg / max over the ranks."""
     multi = sorted((k for k in runs if k[1] > 1), key=lambda k: (order.index(k[0]), k[1], k[2]))
-    if multi:
-        out += ["", "## Per rank", "",
-                "LAMMPS's timing sections in seconds, min / avg / max over the ranks, with the particles "
-                "(Nlocal) and ghost atoms (Nghost) of the least and the most loaded rank. A rank that waits "
-                "for another at a collective step books the wait in the section it waits in.", "",
-                "| case | ranks | balance | Nlocal min-max | Nghost min-max | Pair | Bond | Neigh | Comm | Modify |",
-                "|---|---|---|---|---|---|---|---|---|---|"]
-        for k in multi:
-            r = runs[k]
-            sec = " | ".join("{:.3g} / {:.3g} / {:.3g}".format(*r["sections"][s])
-                             for s in ("Pair", "Bond", "Neigh", "Comm", "Modify"))
-            out.append(f"| {k[0]} | {k[1]} | {bal_name(k[2])} | {r['nlocal'][2]:.0f}-{r['nlocal'][1]:.0f} | "
-                       f"{r['nghost'][2]:.0f}-{r['nghost'][1]:.0f} | {sec} |")
-    # ---- the projection
-    fit = [(stats[c]["neighbours_mean"], runs[(c, 1, "0")]["loop"] / runs[(c, 1, "0")]["steps"] / stats[c]["cells"])
-           for c in blocks if stats[c]["cells"] > 1 and (c, 1, "0") in runs]
-    pair = [c for c in blocks if stats[c]["cells"] > 1 and (c, 1, "0") in runs and (c, 2, "0") in runs]
-    if len(fit) < 2 or not pair:
-        out += ["", "(no projection: it needs two blocks of more than one cell on 1 rank and one on 2 ranks)"]
-        return "\n".join(out) + "\n"
-    f, t = np.array(fit).T
-    b, a = np.polyfit(f, t, 1)
-    t_cell = a + 6.0 * b
-    # what 2 ranks cost beyond half the 1-rank time, less the uneven split and the communication,
-    # per ghost atom: a fit through zero over the blocks (one block alone is at the mercy of noise)
+    if not multi:
+        return []
+    out = ["", "## Per rank", "",
+           "LAMMPS's timing sections in seconds, min / avg / max over the ranks, with the particles "
+           "(Nlocal) and ghost atoms (Nghost) of the least and the most loaded rank. A rank that waits "
+           "for another at a collective step books the wait in the section it waits in.", ""]
+    out += rp.table(["case", "ranks", "balance", "Nlocal min-max", "Nghost min-max", "Pair", "Bond", "Neigh",
+                     "Comm", "Modify"])
+    for k in multi:
+        r = runs[k]
+        sec = " | ".join("{:.3g} / {:.3g} / {:.3g}".format(*r["sections"][s])
+                         for s in ("Pair", "Bond", "Neigh", "Comm", "Modify"))
+        out.append(f"| {k[0]} | {k[1]} | {_bal_name(k[2])} | {r['nlocal'][2]:.0f}-{r['nlocal'][1]:.0f} | "
+                   f"{r['nghost'][2]:.0f}-{r['nghost'][1]:.0f} | {sec} |")
+    return out
+
+
+def ghost_charge(runs, stats, pair):
+    """What 2 ranks cost beyond half the 1-rank time, less the uneven split and the communication,
+    per ghost atom: a fit through zero over the blocks (one block alone is at the mercy of noise).
+    Returns the charge (s per ghost atom and step) and a line of words per block."""
+    import numpy as np
     xs, ys, lines = [], [], []
     for c in pair:
         one, two = runs[(c, 1, "0")], runs[(c, 2, "0")]
@@ -201,7 +260,18 @@ def report(work, steps, warm, settle, load_before, lammps, load_after=None):
                      f"average over the ranks) {comm:.3f} s, the rest {rest:.3f} s on {two['nghost'][0]:.0f} "
                      f"ghost atoms a rank ({1e9 * ys[-1] / xs[-1]:.0f} ns per ghost atom and step)")
     xs, ys = np.array(xs), np.array(ys)
-    ghost_cost = max(float(xs @ ys / (xs @ xs)), 0.0)
+    return max(float(xs @ ys / (xs @ xs)), 0.0), lines
+
+
+def projection(work, runs, stats, fit, pair):
+    """The section on a 1000-cell tissue on 64 and 256 ranks: the measured inputs and the model's
+    table, and the efficiencies it projects on the first network, {ranks: efficiency}."""
+    import os
+    import numpy as np
+    f, t = np.array(fit).T
+    b, a = np.polyfit(f, t, 1)
+    t_cell = a + 6.0 * b
+    ghost_cost, lines = ghost_charge(runs, stats, pair)
     big = pair[-1]
     st = stats[big]
     text = open(os.path.join(work, f"log.{big}.2.0")).read()
@@ -212,27 +282,33 @@ def report(work, steps, warm, settle, load_before, lammps, load_after=None):
     even = [work_imbalance(r) for (c, np_, bl), r in runs.items()
             if np_ > 1 and (bl != "0" or (c in pair))]
     imb_p = max(even)
-    out += ["", "## A 1000-cell tissue on 64 and 256 ranks: a projection, not a measurement", "",
-            f"Measured here: the time per cell-step on one rank is t = {1e6 * a:.1f} + {1e6 * b:.2f} f us over "
-            f"the blocks (f: glued neighbours per cell), {1e6 * t_cell:.0f} us for a cell inside a tissue "
-            f"(f = 6). On 2 ranks:", ""] + [f"- {ln}" for ln in lines] + [
-            "", f"The fit through zero over these blocks charges {1e9 * ghost_cost:.0f} ns per ghost atom and "
-            f"step (a particle of the tissue costs {1e9 * t_cell / (runs[(big, 1, '0')]['atoms'] / st['cells']):.0f} "
-            "ns a step on one rank). It holds whatever 2 ranks lose besides the split and Comm: the ghosts' "
-            "binning and the pairs across the cut, and also an uneven work per particle that Nlocal does not "
-            "see, so the projection is pessimistic." + (" (None measurable: ghosts are charged nothing.)"
-                                                        if ghost_cost == 0 else ""), "",
-            f"Model (tools/cellmech/scaling.py, `project`): P cubic subdomains of 1000/P cells of "
-            f"{vcell:.4g} um^3 and {apc:.0f} particles each; the ghost shell of LAMMPS's ghost cutoff "
-            f"{cutoff:g} um around each; the most loaded rank at the largest imbalance measured here on "
-            f"2 ranks in a balanced run, in particles or in the pair forces' time ({imb_p:.3f}); {HALO_EXCHANGES} halo exchanges per step ({HALO_DOUBLES} doubles per ghost "
-            "atom, 6 messages each); the step's global reductions (the neighbour check's single integer and fix cell/fluid's "
-            f"{8 * 1001} per-cell sums while osmosis is on). Network: latency alpha and bandwidth beta, "
-            "about 2 us and 5 GB/s on an InfiniBand cluster; the other rows show a slower and a faster one. "
-            "Efficiency: 1000 t / P over the time of the step on P ranks.", "",
-            "| ranks | cells/rank | ghost atoms/rank | ns per ghost | compute ms | ghosts ms | halo ms | "
-            "reductions ms | alpha us | beta GB/s | efficiency |",
-            "|---|---|---|---|---|---|---|---|---|---|---|"]
+    out = ["", "## A 1000-cell tissue on 64 and 256 ranks: a projection, not a measurement", "",
+           f"Measured here: the time per cell-step on one rank is t = {1e6 * a:.1f} + {1e6 * b:.2f} f us over "
+           f"the blocks (f: glued neighbours per cell), {1e6 * t_cell:.0f} us for a cell inside a tissue "
+           f"(f = 6). On 2 ranks:", ""] + [f"- {ln}" for ln in lines] + [
+           "", f"The fit through zero over these blocks charges {1e9 * ghost_cost:.0f} ns per ghost atom and "
+           f"step (a particle of the tissue costs {1e9 * t_cell / (runs[(big, 1, '0')]['atoms'] / st['cells']):.0f} "
+           "ns a step on one rank). It holds whatever 2 ranks lose besides the split and Comm: the ghosts' "
+           "binning and the pairs across the cut, and also an uneven work per particle that Nlocal does not "
+           "see, so the projection is pessimistic." + (" (None measurable: ghosts are charged nothing.)"
+                                                       if ghost_cost == 0 else ""), "",
+           f"Model (tools/cellmech/scaling.py, `project`): P cubic subdomains of 1000/P cells of "
+           f"{vcell:.4g} um^3 and {apc:.0f} particles each; the ghost shell of LAMMPS's ghost cutoff "
+           f"{cutoff:g} um around each; the most loaded rank at the largest imbalance measured here on "
+           f"2 ranks in a balanced run, in particles or in the pair forces' time ({imb_p:.3f}); {HALO_EXCHANGES} halo exchanges per step ({HALO_DOUBLES} doubles per ghost "
+           "atom, 6 messages each); the step's global reductions (the neighbour check's single integer and fix cell/fluid's "
+           f"{8 * 1001} per-cell sums while osmosis is on). Network: latency alpha and bandwidth beta, "
+           "about 2 us and 5 GB/s on an InfiniBand cluster; the other rows show a slower and a faster one. "
+           "Efficiency: 1000 t / P over the time of the step on P ranks.", ""]
+    out += projection_table(t_cell, vcell, apc, cutoff, ghost_cost, imb_p)
+    alpha, beta = NETWORKS[0]
+    return out, {P: project(P, 1000, t_cell, vcell, apc, cutoff, ghost_cost, imb_p, alpha, beta)["efficiency"]
+                 for P in (64, 256)}
+
+
+def projection_table(t_cell, vcell, apc, cutoff, ghost_cost, imb_p):
+    out = rp.table(["ranks", "cells/rank", "ghost atoms/rank", "ns per ghost", "compute ms", "ghosts ms",
+                    "halo ms", "reductions ms", "alpha us", "beta GB/s", "efficiency"])
     # the ghost charge is a small difference of two measured times; the last rows bound it by half
     # the whole cost of a particle (a ghost has no forces or integration of its own)
     half = 0.5 * t_cell / apc
@@ -249,9 +325,7 @@ def report(work, steps, warm, settle, load_before, lammps, load_after=None):
                "rank: a bound on the ghost charge, which the blocks above cannot resolve from noise and "
                "cache effects (a block whose particles no longer fit the cache of one core runs faster "
                "than twice as fast on two).")
-    out += ["", "Reproduce with `bash tools/benchmark-tissue.sh -r 3 -o docs/tissue-benchmark.md` (about 8 "
-            "minutes on 2 cores). What the figures say: docs/performance.md, section \"Tissues on MPI\"."]
-    return "\n".join(out) + "\n"
+    return out
 
 
 def main(argv=None):

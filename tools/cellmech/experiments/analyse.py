@@ -205,19 +205,8 @@ def failure(dat, dumpfile, dt, margin):
     Polar angle: latitude of a broken node seen from the wall centre, 0 at the equator (the plane
     through the centre normal to the compression axis z), 90 degrees at the plates.
     """
-    a = load(dat)
-    nb = a[:, IMP["nbroken"]]
-    res = dict(eps_f=float("nan"), t_f=float("nan"))
-    i = np.nonzero(nb > 0)[0]
-    if not len(i):
-        return res
-    res["eps_f"] = float(a[i[0], IMP["eps"]])
-    res["t_f"] = float(a[i[0], IMP["t"]])
-    res["n_final"] = int(nb[-1])
-    # time for the broken count to reach 90% of its final value
-    j = np.nonzero(nb >= 0.9 * nb[-1])[0][0]
-    res["t_90"] = float(a[j, IMP["t"]] - a[i[0], IMP["t"]])
-    if not os.path.exists(dumpfile):
+    res = failure_onset(load(dat))
+    if "n_final" not in res or not os.path.exists(dumpfile):
         return res
     frames = read_dump(dumpfile)
     if not frames:
@@ -226,41 +215,9 @@ def failure(dat, dumpfile, dt, margin):
     # the course; the sparse one the escaping fluid
     dense = read_dump(dumpfile + ".dense") if os.path.exists(dumpfile + ".dense") else []
     res["dense"] = bool(dense)
-    course = []
-    speeds = []
-    first_lat = None
     step0 = (dense or frames)[0][0]
-    for step, cols, d in dense:
-        c = {n: k for k, n in enumerate(cols)}
-        w = d[:, c["type"]] == 1
-        pos = d[:, [c["x"], c["y"], c["z"]]]
-        r = pos - pos[w].mean(axis=0)
-        lat = np.degrees(np.arcsin(np.clip(r[:, 2] / np.linalg.norm(r, axis=1), -1, 1)))
-        br = w & (d[:, c["nbroken"]] > 0)
-        if br.any():
-            if first_lat is None:
-                first_lat = lat[br]
-            course.append(((step - step0) * dt, int(br.sum()), float(lat[br].min()), float(lat[br].max())))
-    for step, cols, d in frames:
-        c = {n: k for k, n in enumerate(cols)}
-        w = d[:, c["type"]] == 1
-        pos = d[:, [c["x"], c["y"], c["z"]]]
-        centre = pos[w].mean(axis=0)
-        r = pos - centre
-        lat = np.degrees(np.arcsin(np.clip(r[:, 2] / np.linalg.norm(r, axis=1), -1, 1)))
-        br = w & (d[:, c["nbroken"]] > 0)
-        if br.any() and not dense:
-            if first_lat is None:
-                first_lat = lat[br]
-            course.append(((step - step0) * dt, int(br.sum()), float(lat[br].min()), float(lat[br].max())))
-        elif br.any() and (not course or (step - step0) * dt > course[-1][0]):
-            course.append(((step - step0) * dt, int(br.sum()), float(lat[br].min()), float(lat[br].max())))
-        fl = d[:, c["type"]] == 2
-        out = _outside(pos[w], pos[fl], centre, margin)
-        v = d[:, [c["vx"], c["vy"], c["vz"]]][fl][out]
-        if len(v):
-            speeds.append(((step - step0) * dt, int(out.sum()), float(np.median(np.linalg.norm(v, axis=1))),
-                           float(np.percentile(np.linalg.norm(v, axis=1), 90))))
+    first_lat, course = crack_course(dense, frames, dt, step0)
+    speeds = escapes(frames, dt, step0, margin)
     if first_lat is not None:
         res["lat_first_mean"] = float(np.mean(first_lat))
         res["lat_first_absmean"] = float(np.mean(np.abs(first_lat)))
@@ -285,3 +242,70 @@ def failure(dat, dumpfile, dt, margin):
             res["jet_p90"] = best[3]
             res["jet_time"] = best[0]
     return res
+
+
+def failure_onset(a):
+    """From the in.failure table a: the strain and time of the first broken tether, the broken
+    count at the end and the time it takes to reach 90% of it (nan strain and time: none broke)."""
+    nb = a[:, IMP["nbroken"]]
+    res = dict(eps_f=float("nan"), t_f=float("nan"))
+    i = np.nonzero(nb > 0)[0]
+    if not len(i):
+        return res
+    res["eps_f"] = float(a[i[0], IMP["eps"]])
+    res["t_f"] = float(a[i[0], IMP["t"]])
+    res["n_final"] = int(nb[-1])
+    # time for the broken count to reach 90% of its final value
+    j = np.nonzero(nb >= 0.9 * nb[-1])[0][0]
+    res["t_90"] = float(a[j, IMP["t"]] - a[i[0], IMP["t"]])
+    return res
+
+
+def _frame(cols, d):
+    """Of one dump frame: column index, wall mask, positions, the wall's centre, each particle's
+    latitude about it, and the mask of wall nodes with a broken element."""
+    c = {n: k for k, n in enumerate(cols)}
+    w = d[:, c["type"]] == 1
+    pos = d[:, [c["x"], c["y"], c["z"]]]
+    centre = pos[w].mean(axis=0)
+    r = pos - centre
+    lat = np.degrees(np.arcsin(np.clip(r[:, 2] / np.linalg.norm(r, axis=1), -1, 1)))
+    return c, w, pos, centre, lat, w & (d[:, c["nbroken"]] > 0)
+
+
+def crack_course(dense, frames, dt, step0):
+    """The latitudes of the first broken nodes and the crack's course, (time after step0, broken
+    nodes, lowest latitude, highest latitude) per frame with a break: from the dense frames when
+    there are any (the sparse ones then only extend it past their end), else the sparse ones."""
+    course = []
+    first_lat = None
+    for step, cols, d in dense:
+        _, _, _, _, lat, br = _frame(cols, d)
+        if br.any():
+            if first_lat is None:
+                first_lat = lat[br]
+            course.append(((step - step0) * dt, int(br.sum()), float(lat[br].min()), float(lat[br].max())))
+    for step, cols, d in frames:
+        _, _, _, _, lat, br = _frame(cols, d)
+        if br.any() and not dense:
+            if first_lat is None:
+                first_lat = lat[br]
+            course.append(((step - step0) * dt, int(br.sum()), float(lat[br].min()), float(lat[br].max())))
+        elif br.any() and (not course or (step - step0) * dt > course[-1][0]):
+            course.append(((step - step0) * dt, int(br.sum()), float(lat[br].min()), float(lat[br].max())))
+    return first_lat, course
+
+
+def escapes(frames, dt, step0, margin):
+    """Per frame with fluid outside the wall: (time after step0, particles outside, their median
+    speed, its 90th percentile)."""
+    speeds = []
+    for step, cols, d in frames:
+        c, w, pos, centre, _, _ = _frame(cols, d)
+        fl = d[:, c["type"]] == 2
+        out = _outside(pos[w], pos[fl], centre, margin)
+        v = d[:, [c["vx"], c["vy"], c["vz"]]][fl][out]
+        if len(v):
+            speeds.append(((step - step0) * dt, int(out.sum()), float(np.median(np.linalg.norm(v, axis=1))),
+                           float(np.percentile(np.linalg.norm(v, axis=1), 90))))
+    return speeds

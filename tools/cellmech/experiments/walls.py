@@ -18,6 +18,7 @@ import re
 import numpy as np
 
 from .. import params
+from .. import reporting as rp
 from . import analyse as A
 
 TITLE = "## Membrane wall"
@@ -247,9 +248,8 @@ def continuum_stretch(eps_list, material="neohookean"):
 
 # ---------------------------------------------------------------- the side-by-side table
 def f3(x, unit=""):
-    if x is None or (isinstance(x, float) and not math.isfinite(x)):
-        return "n/a"
-    return f"{x:.3g}{unit}"
+    s = rp.fmt(x)
+    return s if s == "n/a" else s + unit
 
 
 def swing(r):
@@ -272,9 +272,14 @@ def compare_rows(T, M, cont=None, label="membrane"):
     """Rows (quantity, tether, membrane, paper, why) from the numbers of both walls (tether_numbers,
     measure) and, for failure, the continuum reference (continuum_stretch at each failure strain).
     Each 'why' is worked out from the numbers it stands beside."""
+    return (relax_stiff_rows(T, M, label) + relax_soft_rows(T, M, label) + compression_rows(T, M, label)
+            + transmitted_rows(T, M, label) + shear_rows(T, M, label) + failure_rows(T, M, cont, label))
+
+
+def relax_stiff_rows(T, M, label):
+    """The stiff cell's relaxation: its period at 1 mPa s, and its damping regime."""
     rows = []
     rT, rM = T["relax"], M["relax"]
-    # ---- relaxation
     k = ("stiff", "1")
     if k in rT and k in rM:
         pt, pm = rT[k]["period"], rM[k]["period"]
@@ -306,6 +311,14 @@ def compare_rows(T, M, cont=None, label="membrane"):
                       "the regimes differ at " + ", ".join(m for m in ran if rT.get(("stiff", m), {}).get("regime")
                                                              != rM[("stiff", m)]["regime"]) + " mPa s")
                      + f" ({label} run at {', '.join(ran)} mPa s)"))
+    return rows
+
+
+def relax_soft_rows(T, M, label):
+    """The soft cell's relaxation: its first return at 1 mPa s, and its damping regime
+    (F_eq and the shape H - W)."""
+    rows = []
+    rT, rM = T["relax"], M["relax"]
     k = ("soft", "1")
     if k in rT and k in rM:
         rows.append(("relaxation soft, 1 mPa s: t_first, tau_e (us)",
@@ -346,7 +359,12 @@ def compare_rows(T, M, cont=None, label="membrane"):
         rows.append(("relaxation soft: damping regime", "F_eq: " + regimes(T, "soft", sc),
                      "F_eq: " + regimes(M, "soft", sc) + (f"; shape H - W: {shape_txt}" if shp else ""),
                      "overdamped near 10 mPa s", why))
-    # ---- quasistatic compression: each wall against the continuous membrane of its own law
+    return rows
+
+
+def compression_rows(T, M, label):
+    """Quasistatic compression: each wall against the continuous membrane of its own law."""
+    rows = []
     if "f19" in T and "f19" in M and "theory" in T:
         th = T["theory"]
         rows.append(("quasistatic compression, 0.5 m/s: force at eps = 19% (uN)",
@@ -359,7 +377,12 @@ def compare_rows(T, M, cont=None, label="membrane"):
                      f"{th['neohookean'] / th['network']:.2f}: the force at large strain follows the wall's "
                      "shear modulus (the tether net's is 1.5x the sheet's); each wall is near the continuous "
                      "membrane of its own law"))
-    # ---- impact
+    return rows
+
+
+def transmitted_rows(T, M, label):
+    """Impact: the force passed to the bottom plate, each cell."""
+    rows = []
     for cell in ("stiff", "soft"):
         t, m = T["transmitted"].get(cell), M["transmitted"].get(cell)
         if t and m:
@@ -386,6 +409,12 @@ def compare_rows(T, M, cont=None, label="membrane"):
                              "two laws differ only in shear (the sheet 1.5x softer), so the plates load the wall in "
                              "shear"
                              if cell == "stiff" and "theory" in T else "")))
+    return rows
+
+
+def shear_rows(T, M, label):
+    """Impact: the shear stress of the fluid under the plate at 1 mPa s, each cell."""
+    rows = []
     for cell in ("stiff", "soft"):
         t, m = T["shear"].get((cell, 1)), M["shear"].get((cell, 1))
         if t and m:
@@ -396,7 +425,13 @@ def compare_rows(T, M, cont=None, label="membrane"):
                              ": the fluid's shear under the plate is set by the plate's speed and the viscosity, "
                              "not by the wall" if abs(m[0] / t[0] - 1) < 0.15 else
                              ": the wall changes the flow under the plate")))
-    # ---- failure
+    return rows
+
+
+def failure_rows(T, M, cont, label):
+    """Failure: strain and origin of each run, and the quasistatic crack's course,
+    broken elements and jet."""
+    rows = []
     fT, fM = T["failure"], M["failure"]
     paper_f = {"qs": ("~14%, near the equator, runs to the poles in < 0.5 us"),
                "impact-1": "~7%, near the plate", "impact-1000": "~10%, near the plate"}
@@ -405,74 +440,86 @@ def compare_rows(T, M, cont=None, label="membrane"):
         if not (t and m):
             continue
         c = (cont or {}).get(lab)
-        d = 100 * (m["eps_f"] - t["eps_f"])
-        why = f"{label} {d:+.1f}% strain" + (
-            ", the same latitude next to the other plate (the cell is symmetric)" if
-            abs(abs(m["lat"]) - abs(t["lat"])) < 3 and m["lat"] * t["lat"] < 0 else
-            f", {abs(m['lat']) - abs(t['lat']):+.0f} deg of latitude")
-        why += (f". A triangle fails when its largest principal stretch passes lamf, a tether when its own "
-                f"length does (an edge at 30 deg to the principal direction sees only sqrt(0.75 lam1^2 + "
-                f"0.25 lam2^2)); here the largest edge stretch in the {label} wall just before its first "
-                f"failure was {m.get('lam_edge_f', NAN):.4f}, within "
-                f"{100 * (LAMF - m.get('lam_edge_f', NAN)) / LAMF:.1f}% "
-                "of lamf (and of the largest principal stretch, which lies between them): at the onset "
-                "the two criteria differ little")
-        if c:
-            why += (f". Continuum ({label} law, frictionless plates) at eps = {100 * c['eps']:.1f}%: the "
-                    f"largest stretch {c['lam']:.4f} is the {c['kind']} one at latitude {c['lat']:.0f} deg, "
-                    f"{c['lat_edge'] - c['lat']:.0f} deg below the contact edge ({c['lat_edge']:.0f} deg); "
-                    f"at the equator {c['lam_eq']:.4f}; it reaches lamf at eps = "
-                    f"{100 * c['eps_lamf']:.1f}%: the discrete wall, bent ring by ring over the plate "
-                    "edge, gets there earlier")
-            if c["lat"] > 20 and c["lam"] > c["lam_eq"]:
-                why += (". Between plates a membrane is stretched most just below the contact edge, where "
-                        "the plates have pushed the wall out most relative to its radius, not at the "
-                        "equator" + (": that is where both walls' cracks start" if abs(abs(m["lat"]) - c["lat"])
-                                     < 5 and abs(abs(t["lat"]) - c["lat"]) < 5 else ""))
-        if "series" in m and math.isfinite(t["eps_f"]):
-            e, nb = m["series"]
-            k = np.nonzero(e >= t["eps_f"])[0]
-            if len(k) and nb[k[0]] > 0:
-                why += (f". At the tether wall's failure strain the {label} wall has {nb[k[0]]:.0f} broken edges "
-                        f"already (at the end {nb[-1]:.0f}): the counts of two runs taken at one strain compare "
-                        "their onsets, not their cracks")
         rows.append((f"failure {lab}: eps_f; first broken nodes' latitude (deg)",
                      f"{100 * t['eps_f']:.1f}%; {f3(t['lat'])}", f"{100 * m['eps_f']:.1f}%; {f3(m['lat'])}",
-                     paper_f[lab], why))
+                     paper_f[lab], failure_why(t, m, c, label)))
         if lab == "qs":
-            def run_(x):
-                return (f"{x['span'][0]:.0f} to {x['span'][1]:.0f} deg, {f3(x['speed'])} m/s; 90% after "
-                        f"{f3(x['t_90'])} us" if x["span"] else "n/a")
-            rows.append(("failure qs: crack after 0.2 us (span, speed of its ends)", run_(t), run_(m),
-                         "runs to the poles in < 0.5 us",
-                         f"speed of the ends {label}/tether {m['speed'] / t['speed']:.2f}"
-                         + (": the crack runs about as fast in either wall" if 0.75 < m["speed"] / t["speed"] < 1.33
-                            else "") + f"; the 90% time is {m['t_90'] / t['t_90']:.0f}x the tether's"
-                         + (f" because the {label} keeps failing after the burst (next row)"
-                            if math.isfinite(m.get("rate_after", NAN)) and m["t_90"] > 2 * t["t_90"] else "")))
-            rows.append(("failure qs: broken elements at the end", f"{f3(t['n_final'])} tethers",
-                         f"{f3(m['n_final'])} edges", "not given",
-                         "not the same count: a broken tether is one open edge, while an edge next to "
-                         "a failed triangle counts from that triangle on, so every failed triangle "
-                         "adds its rim edges too"
-                         + (f". After the burst (pressure below a tenth) the {label} wall still loses "
-                            f"{m['rate_after']:.0f} edges per 1% of plate travel with its largest edge "
-                            f"stretch at most {m['lam_edge_after']:.4f}"
-                            # the claim that no edge passes lamf only where the run shows it
-                            + (" < lamf: the triangles that fail then are stretched beyond lamf along "
-                               "none of their edges, i.e. sheared" if m["lam_edge_after"] < LAMF else
-                               f", about lamf = {LAMF:g}: a triangle fails on its largest principal "
-                               "stretch, which shear raises above its edges'")
-                            + " (the empty wall squeezed by the plates; a simple shear of 0.08 along one "
-                            "edge of a triangle gives a principal stretch of 1.04 with its edges at most "
-                            "1.036), which no tether senses" if math.isfinite(m.get("rate_after", NAN)) else "")))
-            rows.append(("failure qs: escaping fluid, median / 90th pct (m/s)",
-                         f"{f3(t['jet'][0])} / {f3(t['jet'][1])}", f"{f3(m['jet'][0])} / {f3(m['jet'][1])}",
-                         "~3", f"{label}/tether {m['jet'][0] / t['jet'][0]:.2f}: the turgor before the burst "
-                         "drives the jet through the opening (the Bernoulli speed at that pressure bounds it, "
-                         "tables above)"))
+            rows += crack_rows(t, m, label)
     return rows
 
+
+def failure_why(t, m, c, label):
+    """Why the walls' failure strains and origins differ: the two criteria at the onset, the
+    continuum's most stretched place (c, quasistatic only), the broken count at the other's strain."""
+    d = 100 * (m["eps_f"] - t["eps_f"])
+    why = f"{label} {d:+.1f}% strain" + (
+        ", the same latitude next to the other plate (the cell is symmetric)" if
+        abs(abs(m["lat"]) - abs(t["lat"])) < 3 and m["lat"] * t["lat"] < 0 else
+        f", {abs(m['lat']) - abs(t['lat']):+.0f} deg of latitude")
+    why += (f". A triangle fails when its largest principal stretch passes lamf, a tether when its own "
+            f"length does (an edge at 30 deg to the principal direction sees only sqrt(0.75 lam1^2 + "
+            f"0.25 lam2^2)); here the largest edge stretch in the {label} wall just before its first "
+            f"failure was {m.get('lam_edge_f', NAN):.4f}, within "
+            f"{100 * (LAMF - m.get('lam_edge_f', NAN)) / LAMF:.1f}% "
+            "of lamf (and of the largest principal stretch, which lies between them): at the onset "
+            "the two criteria differ little")
+    if c:
+        why += (f". Continuum ({label} law, frictionless plates) at eps = {100 * c['eps']:.1f}%: the "
+                f"largest stretch {c['lam']:.4f} is the {c['kind']} one at latitude {c['lat']:.0f} deg, "
+                f"{c['lat_edge'] - c['lat']:.0f} deg below the contact edge ({c['lat_edge']:.0f} deg); "
+                f"at the equator {c['lam_eq']:.4f}; it reaches lamf at eps = "
+                f"{100 * c['eps_lamf']:.1f}%: the discrete wall, bent ring by ring over the plate "
+                "edge, gets there earlier")
+        if c["lat"] > 20 and c["lam"] > c["lam_eq"]:
+            why += (". Between plates a membrane is stretched most just below the contact edge, where "
+                    "the plates have pushed the wall out most relative to its radius, not at the "
+                    "equator" + (": that is where both walls' cracks start" if abs(abs(m["lat"]) - c["lat"])
+                                 < 5 and abs(abs(t["lat"]) - c["lat"]) < 5 else ""))
+    if "series" in m and math.isfinite(t["eps_f"]):
+        e, nb = m["series"]
+        k = np.nonzero(e >= t["eps_f"])[0]
+        if len(k) and nb[k[0]] > 0:
+            why += (f". At the tether wall's failure strain the {label} wall has {nb[k[0]]:.0f} broken edges "
+                    f"already (at the end {nb[-1]:.0f}): the counts of two runs taken at one strain compare "
+                    "their onsets, not their cracks")
+    return why
+
+
+def crack_rows(t, m, label):
+    """The quasistatic crack of both walls: its run, the broken elements at the end, the jet."""
+    rows = []
+    def run_(x):
+        return (f"{x['span'][0]:.0f} to {x['span'][1]:.0f} deg, {f3(x['speed'])} m/s; 90% after "
+                f"{f3(x['t_90'])} us" if x["span"] else "n/a")
+    rows.append(("failure qs: crack after 0.2 us (span, speed of its ends)", run_(t), run_(m),
+                 "runs to the poles in < 0.5 us",
+                 f"speed of the ends {label}/tether {m['speed'] / t['speed']:.2f}"
+                 + (": the crack runs about as fast in either wall" if 0.75 < m["speed"] / t["speed"] < 1.33
+                    else "") + f"; the 90% time is {m['t_90'] / t['t_90']:.0f}x the tether's"
+                 + (f" because the {label} keeps failing after the burst (next row)"
+                    if math.isfinite(m.get("rate_after", NAN)) and m["t_90"] > 2 * t["t_90"] else "")))
+    rows.append(("failure qs: broken elements at the end", f"{f3(t['n_final'])} tethers",
+                 f"{f3(m['n_final'])} edges", "not given",
+                 "not the same count: a broken tether is one open edge, while an edge next to "
+                 "a failed triangle counts from that triangle on, so every failed triangle "
+                 "adds its rim edges too"
+                 + (f". After the burst (pressure below a tenth) the {label} wall still loses "
+                    f"{m['rate_after']:.0f} edges per 1% of plate travel with its largest edge "
+                    f"stretch at most {m['lam_edge_after']:.4f}"
+                    # the claim that no edge passes lamf only where the run shows it
+                    + (" < lamf: the triangles that fail then are stretched beyond lamf along "
+                       "none of their edges, i.e. sheared" if m["lam_edge_after"] < LAMF else
+                       f", about lamf = {LAMF:g}: a triangle fails on its largest principal "
+                       "stretch, which shear raises above its edges'")
+                    + " (the empty wall squeezed by the plates; a simple shear of 0.08 along one "
+                    "edge of a triangle gives a principal stretch of 1.04 with its edges at most "
+                    "1.036), which no tether senses" if math.isfinite(m.get("rate_after", NAN)) else "")))
+    rows.append(("failure qs: escaping fluid, median / 90th pct (m/s)",
+                 f"{f3(t['jet'][0])} / {f3(t['jet'][1])}", f"{f3(m['jet'][0])} / {f3(m['jet'][1])}",
+                 "~3", f"{label}/tether {m['jet'][0] / t['jet'][0]:.2f}: the turgor before the burst "
+                 "drives the jet through the opening (the Bernoulli speed at that pressure bounds it, "
+                 "tables above)"))
+    return rows
 
 # releases of the soft cell that tell what damps it (run by hand beside the stages, see
 # soft_damping_note): file suffix -> what differs from relax-soft-1
@@ -544,17 +591,7 @@ def table(rows, label="membrane"):
 def splice(path, lines, title=TITLE, before=BEFORE):
     """Put `lines` (a section starting with `title`) in place of that section of the markdown file
     `path`, or before the heading `before` (at the end when there is none); the rest stays."""
-    text = open(path).read().split("\n") if os.path.exists(path) else []
-    heads = [k for k, ln in enumerate(text) if ln.startswith("## ")]
-    start = next((k for k in heads if text[k] == title), None)
-    if start is None:
-        start = end = next((k for k in heads if text[k] == before), len(text))
-    else:
-        end = next((k for k in heads if k > start), len(text))
-    text[start:end] = list(lines) + [""]
-    out = "\n".join(text)
-    with open(path, "w") as f:
-        f.write(out if out.endswith("\n") else out + "\n")
+    rp.splice(path, lines, title, before)
 
 
 def title_of(label):
@@ -563,24 +600,15 @@ def title_of(label):
 
 def section_of(path, title=TITLE):
     """The lines of section `title` of the markdown file `path` ([] when it has none)."""
-    if not os.path.exists(path):
-        return []
-    text = open(path).read().split("\n")
-    heads = [k for k, ln in enumerate(text) if ln.startswith("## ")]
-    start = next((k for k in heads if text[k] == title), None)
-    if start is None:
-        return []
-    end = next((k for k in heads if k > start), len(text))
-    return text[start:end]
+    return rp.section_of(path, title)
 
 
 def section(run, report, label="membrane", continuum=True):
     """The section's lines: the side-by-side table from the committed report REPORT/experiments.md
     (tether) and the run folder RUN (membrane), and plots of the membrane's relaxation and crack."""
     T = tether_numbers(open(os.path.join(report, "experiments.md")).read())
-    info = open(os.path.join(run, "run-info.txt")).readline() if os.path.exists(
-        os.path.join(run, "run-info.txt")) else ""
-    r0 = float(dict(w.split("=", 1) for w in info.lstrip("# ").split() if "=" in w).get("r0", 1.6))
+    info, settings = rp.run_info(run)
+    r0 = float(settings.get("r0", 1.6))
     M = measure(run, r0=r0)
     cont = {}
     # the quasistatic failure beside the continuous membrane of the same law (an impact is not
@@ -594,7 +622,7 @@ def section(run, report, label="membrane", continuum=True):
          "the Neo-Hookean sheet on the wall triangles, failure when a triangle's largest principal stretch "
          f"passes lamf = {LAMF}) beside the tether wall of the tables above and the paper. Generated by "
          f"`WALL={label} RES=paper bash tools/experiments.sh` (report.py --membrane); run settings: "
-         f"`{info.lstrip('# ').strip()}`.", ""]
+         f"`{info.strip()}`.", ""]
     L += table(rows, label)
     L += [""] + soft_damping_note(run)
     figs = plots(M, run, os.path.join(report, "experiments"), label)
@@ -633,7 +661,6 @@ def plots(M, run, figdir, label):
             ax.legend(fontsize=8)
         fig.suptitle(f"Relaxation, {cell} cell, {label} wall")
         name = f"{label}-relax-{cell}.png"
-        plt.savefig(os.path.join(figdir, name), dpi=110, bbox_inches="tight")
-        plt.close()
+        rp.save_figure(os.path.join(figdir, name), fig, bbox_tight=True)
         figs.append((f"{label.capitalize()} wall: relaxation of the {cell} cell", name))
     return figs

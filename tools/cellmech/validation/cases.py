@@ -12,6 +12,7 @@ from .common import (C_PHYS, INPUTS, LEVELS, M_WALL, R0, RHO0, SOFT, STIFF, mode
                      prep_times, resolution, run_vars)
 from . import analysis
 from . import bending
+from .entry import Entry, pyplot, save_plot
 from . import references as ref
 
 COMPRESS_STRAINS = (0.05, 0.10, 0.15, 0.20)
@@ -30,49 +31,6 @@ BREATHING_KICK = 2.0
 TURGOR_SERIES = (364.0, 30.0, 300.0, 3.0)
 YL_PRESSURES = (100.0, 200.0, 400.0)
 SHEET_MEMBRANE_LAMS = (1.01, 1.05, 1.1, 1.2, 1.3, 1.4, 1.5)
-
-
-class Entry:
-    def __init__(self, cid, title, paper, res):
-        self.d = dict(id=cid, title=title, paper=paper, resolution=res, status="ok", rows=[],
-                      notes=[], plots=[], wall_time_s=None)
-
-    def add(self, name, measured, reference, unit="", tol=None, group=None):
-        err = None
-        if measured is not None and reference not in (None, 0) and np.isfinite(measured):
-            err = measured / reference - 1
-        self.d["rows"].append(dict(name=name, measured=_f(measured), reference=_f(reference),
-                                   rel_error=_f(err), unit=unit, tolerance=tol, group=group))
-        return err
-
-    def note(self, text):
-        self.d["notes"].append(text)
-
-    def finish(self):
-        r = self.d["rows"]
-        self.d["measured"] = {x["name"]: x["measured"] for x in r}
-        self.d["reference"] = {x["name"]: x["reference"] for x in r}
-        self.d["rel_error"] = {x["name"]: x["rel_error"] for x in r}
-        return self.d
-
-
-def _f(x):
-    return None if x is None else float(x)
-
-
-def _plt():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
-
-
-def _save(fig, ctx, name, entry):
-    path = os.path.join(ctx["plotdir"], name)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    _plt().close(fig)
-    entry.d["plots"].append(name)
 
 
 # ---- runs shared between cases (the Runner skips a run already done with the same settings) -----
@@ -200,7 +158,7 @@ def case_breathing_vacuo(run, level, ctx):
     run.cellgen(data, "cell", "--level", level, "--nfluid", 0, "--wall-mass", M_WALL, *bend)
     mesh = ref.mesh_factor(level)
     k = LEVELS[level]["dt"] / 0.001          # level 5 halves the time step (lighter nodes)
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6, 3.5))
     for name, p, dt, steps in (("stiff", STIFF, 0.001, 600), ("soft", SOFT, 0.02, 1500)):
         out = f"vacuo-{name}-L{level}.dat"
@@ -216,7 +174,7 @@ def case_breathing_vacuo(run, level, ctx):
     ax.set_ylabel("mean radius / R - 1")
     ax.set_xlim(0, 3)
     ax.legend()
-    _save(fig, ctx, "breathing-vacuo.png", e)
+    save_plot(fig, ctx, "breathing-vacuo.png", e)
     e.note(f"Wall released from an isotropic stretch of 1.002 (small, so the Neo-Hookean shift of "
            f"order lam - 1 stays far below 1%). The period comes from the first two periods of the "
            f"mean radius. The geodesic network's own uniform-mode frequency is Eq. A5 times "
@@ -232,7 +190,7 @@ def case_breathing_fluid(run, level, ctx):
               "ground mode and two more within 5-10% at c = 50 m/s; first two modes within 6% at "
               "c = 250 m/s", resolution(level))
     E, t0 = 3 * STIFF["G"], STIFF["t0"]
-    plt = _plt()
+    plt = pyplot()
     fig, axes = plt.subplots(len(BREATHING_SPEEDS), 1, figsize=(6, 2.3 * len(BREATHING_SPEEDS)))
     for ax, c in zip(axes, BREATHING_SPEEDS):
         w, amp, peaks, infl, nw, nf = breathe(run, level, c, BREATHING_KICK)
@@ -267,7 +225,7 @@ def case_breathing_fluid(run, level, ctx):
         ax.set_ylabel("amplitude")
         ax.legend(fontsize=7)
     axes[-1].set_xlabel("omega (rad/us)")
-    _save(fig, ctx, "breathing-fluid.png", e)
+    save_plot(fig, ctx, "breathing-fluid.png", e)
     e.note(f"The wall is kicked inward at {BREATHING_KICK:g} m/s and released. "
            "Modes: the strongest spectral peaks of the mean wall radius (FFTW, Hann window; a cubic "
            "fit over the record taken out first, peaks with fewer than 4 periods in the record "
@@ -303,7 +261,7 @@ def case_young_laplace(run, level, ctx):
                 e.note(f"{wall} wall, P = {P:g} kPa: {st['leak']} fluid particles outside the wall")
             xs[wall].append(fyl)
             ys[wall].append(st["Feq"])
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(4.5, 4))
     for wall, mk in (("tether", "o"), ("membrane", "s")):
         ax.plot(np.array(xs[wall]) * 1e-3, np.array(ys[wall]) * 1e-3, mk, mfc="none",
@@ -315,7 +273,7 @@ def case_young_laplace(run, level, ctx):
     ax.set_xlabel("P pi R^2 (uN)")
     ax.set_ylabel("F_eq (uN)")
     ax.legend()
-    _save(fig, ctx, "young-laplace.png", e)
+    save_plot(fig, ctx, "young-laplace.png", e)
     e.note("P and R = lam R0 are the simulation's mean fluid pressure and mean stretch after the "
            "osmotic inflation (mean of the last 4 outputs). The strain row compares lam - 1 with "
            "the Neo-Hookean tension P R / 2 = G t0 (1 - lam^-6).")
@@ -331,7 +289,7 @@ def case_sheet(run, level, ctx):
               "good agreement with A1 up to lam = 1.2; A2 error below 20%",
               dict(level=None, wall_nodes=N * N, fluid_particles=0))
     G, t0 = STIFF["G"], STIFF["t0"]
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for orient in ("x", "y"):
         data = f"sheet-{orient}.data"
@@ -382,7 +340,7 @@ def case_sheet(run, level, ctx):
     ax.set_xlabel("lam")
     ax.set_ylabel("F / (G t0 W)")
     ax.legend(fontsize=7)
-    _save(fig, ctx, "sheet.png", e)
+    save_plot(fig, ctx, "sheet.png", e)
     e.note("W is the loaded edge's tributary width. The sheet's resolution is the paper's (20 x 20 "
            "nodes) at every RES. The small-strain modulus of a triangular spring network "
            "(k = 6 G t0/sqrt3) is 4 G t0 with free sides and 4.5 G t0 with fixed ones; A1 and A2 "
@@ -449,51 +407,22 @@ def case_compression(run, level, ctx):
     tol = None if run.wall == "tether" else 0.05
     model, name, vplate, prep = case5_protocol(run.wall, level)
     volumes, settled = {}, []
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6, 4.2))
     missing = False
     for i, P in enumerate(TURGOR_SERIES):
         eps, F, rec, nw, nf = compress(run, level, P, model=model, name=name, vplate=vplate, prep=prep)
         e.d["resolution"] = resolution(level, nw=nw, nf=nf)
         st = turgid_state(run, rec)
-        # Young-Laplace on the cells squeezed here: the issue's 1% for the membrane walls (case 3
-        # holds the paper's 5% at 100-400 kPa on cells inflated directly)
-        e.add(f"P={P:g}: turgid cell's F_eq vs P pi R^2 (Young-Laplace)", st["Feq"],
-              st["P"] * math.pi * st["R"] ** 2, "nN", tol=None if tol is None else 0.01,
-              group="young-laplace")
-        # an equilibrium statement: it counts only if the cell is at rest
-        e.add(f"P={P:g}: change of F_eq / (P pi R^2) over the last {st['span']:.0f} us of the "
-              f"preparation", st["yl_drift"], None, group="young-laplace-rest")
-        if "drift" in st:
-            # settled: the turgor reached, and the fluid mass steady over the last fifth
-            e.add(f"P={P:g}: turgor after settling (in.turgor)", st["P"], P, "kPa", group=f"P{P:g}-settle")
-            e.add(f"P={P:g}: fluid mass change over the last {st['span']:.0f} us of settling",
-                  st["drift"], None, group=f"P{P:g}-settle")
+        if turgid_rows(e, P, st, tol):
             settled.append(P)
         Fw = analysis.windowed(eps, F, COMPRESS_STRAINS, half)
-        rho = ref.tait_density(st["P"], RHO0, C_PHYS)
-        mem, why, mem_dv = membrane_reference(st["P"], REF_GRID, rho, volumes=True)
-        if mem is None:
-            missing = True
-            e.note(f"P = {P:g} kPa: reference missing ({why}).")
-        net, _ = membrane_reference(st["P"], REF_GRID, rho, material="network")
-        memw = windowed_reference(eps, COMPRESS_STRAINS, half, mem)
-        netw = windowed_reference(eps, COMPRESS_STRAINS, half, net)
-        for x, r, s in zip(Fw, memw, COMPRESS_STRAINS):
-            e.add(f"P={P:g}: F at eps {s:.2f}", x, r, "nN", tol=tol, group=f"P{P:g}")
-        for x, r, s in zip(Fw, netw, COMPRESS_STRAINS):
-            e.add(f"P={P:g}: F at eps {s:.2f} vs network law", x, r, "nN", tol=None,
-                  group=f"P{P:g}-network")
+        mem, mem_dv = force_rows(e, P, st, eps, Fw, half, tol)
+        missing = missing or mem is None
         a = np.loadtxt(run.path(compress_record(level, P, name, vplate)), ndmin=2)
-        if a.shape[1] >= 11:       # the volumes (in.compress columns 10, 11; older runs lack them)
-            k = int(np.argmin(abs(a[:, 2] - COMPRESS_STRAINS[-1])))
-            dv = [a[k, j] / a[0, j] - 1 for j in (9, 10)]
-            for x, what in zip(dv, ("volume the wall encloses", "fluid volume sum m/rho")):
-                e.add(f"P={P:g}: {what}, change at eps {a[k, 2]:.2f}", x, None,
-                      group=f"P{P:g}-volume")
-            xs, vs = on_grid(mem_dv)
-            if xs:
-                volumes[P] = (a[k, 2], dv[0], dv[1], float(np.interp(a[k, 2], xs, vs)))
+        vol = volume_rows(e, P, a, mem_dv)
+        if vol:
+            volumes[P] = vol
         ax.plot(eps, F * 1e-3, f"C{i}-", lw=1, label=f"P = {P:g} kPa (sim)")
         ax.plot(COMPRESS_STRAINS, Fw * 1e-3, f"C{i}o", ms=4)
         if mem is not None:
@@ -504,9 +433,69 @@ def case_compression(run, level, ctx):
     ax.set_xlabel("strain eps = DeltaX / 2R")
     ax.set_ylabel("plate force (uN)")
     ax.legend(fontsize=7)
-    _save(fig, ctx, "compression.png", e)
+    save_plot(fig, ctx, "compression.png", e)
     if missing:
         e.d["status"] = "reference missing"
+    compression_notes(e, level, volumes, settled, model, vplate, prep, half)
+    return e
+
+
+def turgid_rows(e, P, st, tol):
+    """The turgid cell before the plates: Young-Laplace, at rest, and (a cell let down by osmosis)
+    the turgor it settled at. True when it was settled."""
+    # Young-Laplace on the cells squeezed here: the issue's 1% for the membrane walls (case 3
+    # holds the paper's 5% at 100-400 kPa on cells inflated directly)
+    e.add(f"P={P:g}: turgid cell's F_eq vs P pi R^2 (Young-Laplace)", st["Feq"],
+          st["P"] * math.pi * st["R"] ** 2, "nN", tol=None if tol is None else 0.01,
+          group="young-laplace")
+    # an equilibrium statement: it counts only if the cell is at rest
+    e.add(f"P={P:g}: change of F_eq / (P pi R^2) over the last {st['span']:.0f} us of the "
+          f"preparation", st["yl_drift"], None, group="young-laplace-rest")
+    if "drift" not in st:
+        return False
+    # settled: the turgor reached, and the fluid mass steady over the last fifth
+    e.add(f"P={P:g}: turgor after settling (in.turgor)", st["P"], P, "kPa", group=f"P{P:g}-settle")
+    e.add(f"P={P:g}: fluid mass change over the last {st['span']:.0f} us of settling",
+          st["drift"], None, group=f"P{P:g}-settle")
+    return True
+
+
+def force_rows(e, P, st, eps, Fw, half, tol):
+    """The windowed plate forces against the membrane model of both laws (Neo-Hookean judged with
+    tol, the network law compared). Returns the Neo-Hookean model's forces and volume changes on
+    REF_GRID (None, None when its solver gave none: a note says why)."""
+    rho = ref.tait_density(st["P"], RHO0, C_PHYS)
+    mem, why, mem_dv = membrane_reference(st["P"], REF_GRID, rho, volumes=True)
+    if mem is None:
+        e.note(f"P = {P:g} kPa: reference missing ({why}).")
+    net, _ = membrane_reference(st["P"], REF_GRID, rho, material="network")
+    memw = windowed_reference(eps, COMPRESS_STRAINS, half, mem)
+    netw = windowed_reference(eps, COMPRESS_STRAINS, half, net)
+    for x, r, s in zip(Fw, memw, COMPRESS_STRAINS):
+        e.add(f"P={P:g}: F at eps {s:.2f}", x, r, "nN", tol=tol, group=f"P{P:g}")
+    for x, r, s in zip(Fw, netw, COMPRESS_STRAINS):
+        e.add(f"P={P:g}: F at eps {s:.2f} vs network law", x, r, "nN", tol=None,
+              group=f"P{P:g}-network")
+    return mem, mem_dv
+
+
+def volume_rows(e, P, a, mem_dv):
+    """The volume changes at the last strain of the record a (in.compress), when it has the volume
+    columns: rows, and (strain, wall's, fluid's, model's) for the note, or None."""
+    if a.shape[1] < 11:       # the volumes (in.compress columns 10, 11; older runs lack them)
+        return None
+    k = int(np.argmin(abs(a[:, 2] - COMPRESS_STRAINS[-1])))
+    dv = [a[k, j] / a[0, j] - 1 for j in (9, 10)]
+    for x, what in zip(dv, ("volume the wall encloses", "fluid volume sum m/rho")):
+        e.add(f"P={P:g}: {what}, change at eps {a[k, 2]:.2f}", x, None,
+              group=f"P{P:g}-volume")
+    xs, vs = on_grid(mem_dv)
+    return (a[k, 2], dv[0], dv[1], float(np.interp(a[k, 2], xs, vs))) if xs else None
+
+
+def compression_notes(e, level, volumes, settled, model, vplate, prep, half):
+    """What the case's numbers mean: the volumes, the turgid cells' preparation, the membrane
+    walls' protocol, the windows and the two laws of the reference."""
     if volumes:
         e.note("Volumes: " + "; ".join(
             f"P = {P:g} kPa, eps {x:.2f}: the wall encloses {w:+.2%}, the fluid's own volume (sum "
@@ -548,7 +537,6 @@ def case_compression(run, level, ctx):
            f"sheet the paper models, and with the law of the tether network itself (Eq. 19 "
            f"tethers on a triangular net, orientation-averaged: the same equibiaxial tension, 1.5x "
            f"the shear modulus; docs/membrane.rst), which the tether wall follows.")
-    return e
 
 
 # ---- case 6 ------------------------------------------------------------------------------------
@@ -581,54 +569,16 @@ def case_resolution(run, level, ctx):
         # 0.5 m/s plates add 1.6-1.8% to the force at 10-20% strain, docs/membrane.rst)
         model, name, _, prep = case5_protocol(run.wall, l)
         try:
-            eps, F, infl, nw, nf = compress(run, l, STIFF["P"], model=model, name=name, prep=prep)
-            Fw = analysis.windowed(eps, F, (0.10, 0.20), half)
-            _, _, peaks, _, _, _ = breathe(run, l, C_PHYS)
-            w = analysis.strongest_modes(peaks, 2)
-            st = turgid_state(run, infl)
-            mem, _ = membrane_reference(st["P"], REF_GRID, ref.tait_density(st["P"], RHO0, C_PHYS))
-            a4 = ref.a4_roots(3 * STIFF["G"] * STIFF["t0"], st["R"], M_WALL, RHO0, C_PHYS, 2)
-            analytic[l] = windowed_reference(eps, (0.10, 0.20), half, mem) + a4
-            a = np.loadtxt(run.path(compress_record(l, STIFF["P"], name)), ndmin=2)
-            top = analysis.windowed(a[:, 2], a[:, 3], (0.10, 0.20), half)
-            bot = analysis.windowed(a[:, 2], a[:, 4], (0.10, 0.20), half)
-            diag[l] = (st["lam"], ref.young_laplace_stretch_at(st["P"], st["R"], STIFF["G"], STIFF["t0"]),
-                       top / bot)
+            got[l], analytic[l], diag[l], nf = resolution_level(run, l, half, model, name, prep)
         except Exception as exc:   # keep the levels that finished
             e.note(f"level {l}: {exc}".splitlines()[0])
             continue
-        got[l], nfs[l] = (Fw[0], Fw[1], w[0], w[1]), nf
-        m = re.findall(r"Loop time of ([\d.eE+-]+) on (\d+) procs for (\d+) steps",
-                       open(run.path(f"log.compress-{compress_tag(l, STIFF['P'], name)}")).read())
-        if m:
-            e.note(f"level {l}: compression {float(m[-1][0]) / int(m[-1][2]) * 1e3:.1f} ms per step "
-                   f"on {m[-1][1]} rank(s) (a shared machine: other work ran beside it)")
-        dx = float(re.search(r"spacing ([\d.]+)", open(run.path(f"cell{l}.data.info")).read()).group(1))
-        e.note(f"level {l}: fluid spacing dx = {dx:.3f} um, smoothing length s = {LEVELS[l]['s']:g} um, "
-               f"s/dx = {LEVELS[l]['s'] / dx:.3f}")
-        e.note(f"level {l} ({10 * 4 ** l + 2} wall nodes, {nf} fluid particles, dt = "
-               f"{LEVELS[l]['dt'] * 1e3:g} ns): inflation {prep_times(l, **prep)[0]:g} us, compression to 22% "
-               f"strain, breathing 10 us; LAMMPS wall time of these runs {run.seconds - s0:.0f} s")
+        nfs[l] = nf
+        resolution_level_notes(e, run, l, nf, name, prep, s0)
         ctx["save"](e)             # partial results reach the report
     done = sorted(got)
     e.d["resolution"]["fluid_particles"] = [nfs.get(l, LEVELS[l]["nfluid"]) for l in levels]
-    e.d["study"] = {}
-    metrics = {}
-    for i, k in enumerate(keys):
-        vals = [got[l][i] for l in done]
-        metrics[k] = vals
-        p, extra = (ref.observed_order(*vals) if len(vals) == 3 else (None, None))
-        e.d["study"][k] = dict(levels=done, values=[float(v) for v in vals], order=p,
-                               extrapolated=extra)
-        unit = "nN" if k.startswith("F") else "rad/us"
-        for l, v in zip(done, vals):
-            e.add(f"{k}, level {l} vs Richardson extrapolate", v, extra, unit, group=k)
-        for l, v in zip(done, vals):
-            e.add(f"{k}, level {l} vs {'membrane model' if k.startswith('F') else 'Eq. A4'}", v,
-                  analytic[l][i], unit, group=k + " analytic")
-        e.note(f"{k}: " + ", ".join(f"L{l} {v:.5g}" for l, v in zip(done, vals)) +
-               (f"; observed order {p:.2f}, Richardson extrapolate {extra:.5g}" if p else
-                "; no monotone convergence over these levels (no order)" if len(vals) == 3 else ""))
+    metrics = study_rows(e, keys, done, got, analytic)
     for l in done:
         lam, lam_yl, ratio = diag[l]
         e.add(f"turgid strain lam-1 at 364 kPa, level {l} vs Neo-Hookean Young-Laplace",
@@ -650,7 +600,71 @@ def case_resolution(run, level, ctx):
                "paper's 0.5 m/s; the breathing, the model's own (Eq. M1, the level's f0).")
     if len(done) < len(levels):
         e.d["status"] = "partial"
-    plt = _plt()
+    resolution_plot(e, ctx, metrics, done)
+    return e
+
+
+def resolution_level(run, l, half, model, name, prep):
+    """One level of the study with case 5's protocol (model, name, prep): the compression forces
+    at 10 and 20% and the two strongest breathing modes, their analytic counterparts (membrane
+    model, Eq. A4), the diagnostics (turgid stretch and its Young-Laplace value, top/bottom plate
+    force) and the fluid count."""
+    eps, F, infl, nw, nf = compress(run, l, STIFF["P"], model=model, name=name, prep=prep)
+    Fw = analysis.windowed(eps, F, (0.10, 0.20), half)
+    _, _, peaks, _, _, _ = breathe(run, l, C_PHYS)
+    w = analysis.strongest_modes(peaks, 2)
+    st = turgid_state(run, infl)
+    mem, _ = membrane_reference(st["P"], REF_GRID, ref.tait_density(st["P"], RHO0, C_PHYS))
+    a4 = ref.a4_roots(3 * STIFF["G"] * STIFF["t0"], st["R"], M_WALL, RHO0, C_PHYS, 2)
+    analytic = windowed_reference(eps, (0.10, 0.20), half, mem) + a4
+    a = np.loadtxt(run.path(compress_record(l, STIFF["P"], name)), ndmin=2)
+    top = analysis.windowed(a[:, 2], a[:, 3], (0.10, 0.20), half)
+    bot = analysis.windowed(a[:, 2], a[:, 4], (0.10, 0.20), half)
+    diag = (st["lam"], ref.young_laplace_stretch_at(st["P"], st["R"], STIFF["G"], STIFF["t0"]), top / bot)
+    return (Fw[0], Fw[1], w[0], w[1]), analytic, diag, nf
+
+
+def resolution_level_notes(e, run, l, nf, name, prep, s0):
+    """The level's cost per step, fluid spacing and run times."""
+    m = re.findall(r"Loop time of ([\d.eE+-]+) on (\d+) procs for (\d+) steps",
+                   open(run.path(f"log.compress-{compress_tag(l, STIFF['P'], name)}")).read())
+    if m:
+        e.note(f"level {l}: compression {float(m[-1][0]) / int(m[-1][2]) * 1e3:.1f} ms per step "
+               f"on {m[-1][1]} rank(s) (a shared machine: other work ran beside it)")
+    dx = float(re.search(r"spacing ([\d.]+)", open(run.path(f"cell{l}.data.info")).read()).group(1))
+    e.note(f"level {l}: fluid spacing dx = {dx:.3f} um, smoothing length s = {LEVELS[l]['s']:g} um, "
+           f"s/dx = {LEVELS[l]['s'] / dx:.3f}")
+    e.note(f"level {l} ({10 * 4 ** l + 2} wall nodes, {nf} fluid particles, dt = "
+           f"{LEVELS[l]['dt'] * 1e3:g} ns): inflation {prep_times(l, **prep)[0]:g} us, compression to 22% "
+           f"strain, breathing 10 us; LAMMPS wall time of these runs {run.seconds - s0:.0f} s")
+
+
+def study_rows(e, keys, done, got, analytic):
+    """Each metric over the finished levels against its Richardson extrapolate and its analytic
+    value, with the observed order; returns {metric: values over the levels}."""
+    e.d["study"] = {}
+    metrics = {}
+    for i, k in enumerate(keys):
+        vals = [got[l][i] for l in done]
+        metrics[k] = vals
+        p, extra = (ref.observed_order(*vals) if len(vals) == 3 else (None, None))
+        e.d["study"][k] = dict(levels=done, values=[float(v) for v in vals], order=p,
+                               extrapolated=extra)
+        unit = "nN" if k.startswith("F") else "rad/us"
+        for l, v in zip(done, vals):
+            e.add(f"{k}, level {l} vs Richardson extrapolate", v, extra, unit, group=k)
+        for l, v in zip(done, vals):
+            e.add(f"{k}, level {l} vs {'membrane model' if k.startswith('F') else 'Eq. A4'}", v,
+                  analytic[l][i], unit, group=k + " analytic")
+        e.note(f"{k}: " + ", ".join(f"L{l} {v:.5g}" for l, v in zip(done, vals)) +
+               (f"; observed order {p:.2f}, Richardson extrapolate {extra:.5g}" if p else
+                "; no monotone convergence over these levels (no order)" if len(vals) == 3 else ""))
+    return metrics
+
+
+def resolution_plot(e, ctx, metrics, done):
+    """Each metric against the wall nodes of the finished levels."""
+    plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(8, 3.3))
     for k, vals in metrics.items():
         ax = axes[0] if k.startswith("F") else axes[1]
@@ -661,8 +675,7 @@ def case_resolution(run, level, ctx):
         ax.set_xlabel("wall nodes")
         ax.set_ylabel(yl)
         ax.legend(fontsize=7)
-    _save(fig, ctx, "resolution.png", e)
-    return e
+    save_plot(fig, ctx, "resolution.png", e)
 
 
 # ---- case 7 ------------------------------------------------------------------------------------
@@ -704,13 +717,13 @@ def case_energy(run, level, ctx):
     e.d["rows"][-1]["rel_error"] = float(dev)
     e.add("secular drift / max KE", drift, 0.0, tol=ENERGY_DRIFT * scale)
     e.d["rows"][-1]["rel_error"] = float(drift)
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6, 3.3))
     ax.plot(t - t[0], (et - et[0]) / ke.max(), "k-", lw=1, label="(E - E0) / max KE")
     ax.plot(t - t[0], ke / ke.max() * ENERGY_DEV, "C0-", lw=0.7, label=f"KE / max KE x {ENERGY_DEV:g}")
     ax.set_xlabel("t (us)")
     ax.legend(fontsize=7)
-    _save(fig, ctx, "energy.png", e)
+    save_plot(fig, ctx, "energy.png", e)
     e.note("Reference: exact conservation (0); the error column is the deviation per the largest "
            "kinetic energy. Bound: velocity Verlet with the density leapfrogging the velocities is "
            "second order and time-reversible; its energy error oscillates with amplitude "

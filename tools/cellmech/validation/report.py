@@ -5,6 +5,7 @@ import json
 import os
 import platform
 
+from .. import reporting as rp
 from ..params import ROOT, WALLS
 
 
@@ -85,6 +86,118 @@ def side_by_side(wall, entries, others):
     return L if n else []
 
 
+def verdict(e):
+    """Whether every row of case e that has a tolerance is within it: "pass", "fails N of M rows"
+    (a row with a tolerance and no measured error counts as outside), "no tolerance" when no row
+    states one (compared, not judged), "not run" (skipped), "error"; a pass of a case whose status
+    is not ok says the status."""
+    if e["status"] == "skipped":
+        return "not run"
+    if e["status"] == "error":
+        return "error"
+    judged = [r for r in e["rows"] if r["tolerance"] is not None]
+    if not judged:
+        return "no tolerance"
+    fails = sum(not (r["rel_error"] is not None and abs(r["rel_error"]) < r["tolerance"]) for r in judged)
+    if fails:
+        return f"fails {fails} of {len(judged)} rows"
+    return "pass" if e["status"] == "ok" else f"pass ({e['status']})"
+
+
+def summary(meta, entries, how):
+    """The report's opening paragraph in plain words: what ran, which cases pass, which fail and
+    by how much, which are compared only."""
+    v = {e["id"].split("-")[0]: verdict(e) for e in entries}
+    ran = [e for e in entries if e["status"] != "skipped"]
+    said = [f"`{how} bash tools/validate.sh` checked the `{meta['wall']}` wall in {len(ran)} of "
+            f"{len(entries)} cases against references computed from the paper's formulas and the "
+            f"model's parameters (the cases' wall times add up to "
+            f"{sum(e.get('wall_time_s') or 0 for e in entries):.0f} s)."]
+    passed = [k for k, x in v.items() if x.startswith("pass")]
+    failed = [(k, x) for k, x in v.items() if x.startswith("fails")]
+    said.append(f"{len(passed)} {'case passes' if len(passed) == 1 else 'cases pass'} (every row with a tolerance "
+                "within it)" + (": " + ", ".join(passed) if passed else "") + ".")
+    for e in entries:
+        k = e["id"].split("-")[0]
+        if v[k].startswith("fails"):
+            worst = max((r for r in e["rows"] if r["tolerance"] is not None and r["rel_error"] is not None),
+                        key=lambda r: abs(r["rel_error"]) / r["tolerance"], default=None)
+            said.append(f"Case {k}, {e['title']}, {v[k]}" + (
+                f"; the farthest, {worst['name'].strip()}, is off by {100 * abs(worst['rel_error']):.3g}% "
+                f"against a tolerance of {100 * worst['tolerance']:.3g}%" if worst else "") + ".")
+    compared = [k for k, x in v.items() if x == "no tolerance"]
+    if compared:
+        said.append(f"Compared only (no tolerance stated): {', '.join(compared)}.")
+    other = [f"{k} ({x})" for k, x in v.items() if x in ("not run", "error")]
+    if other:
+        said.append(f"Not judged: {', '.join(other)}.")
+    if not failed:
+        said.append("No case misses its tolerance.")
+    return rp.summary(*said)
+
+
+def case_table(entries):
+    """The overview: one row per case."""
+    L = rp.table(["case", "status", "verdict", "resolution", "wall time", "rows within tolerance",
+                  "largest abs. error", "paper"])
+    for e in entries:
+        errs = [abs(r["rel_error"]) for r in e["rows"] if r["rel_error"] is not None]
+        tol = [r for r in e["rows"] if r["tolerance"] is not None and r["rel_error"] is not None]
+        ok = sum(abs(r["rel_error"]) < r["tolerance"] for r in tol)
+        wt = e.get("wall_time_s")
+        L.append(f"| {e['title']} | {e['status']} | {verdict(e)} | {_res(e.get('resolution'))} | "
+                 f"{'—' if wt is None else f'{wt:.0f} s'} | {f'{ok} of {len(tol)}' if tol else '—'} | "
+                 f"{f'{max(errs):.2%}' if errs else '—'} | {e['paper']} |")
+    return L
+
+
+def case_section(e):
+    """The section of one case: its rows, notes and plots."""
+    L = ["", f"## {e['id'].split('-')[0]}. {e['title']}", "",
+         f"*Paper:* {e['paper']}  ", f"*Resolution:* {_res(e.get('resolution'))}  ",
+         f"*Wall time:* {e.get('wall_time_s')} s  ", f"*Status:* {e['status']}  ", f"*Verdict:* {verdict(e)}", ""]
+    if e["rows"]:
+        L += rp.table(["quantity", "measured", "reference", "rel. error", "tolerance"])
+        for r in e["rows"]:
+            u = f" {r['unit']}" if r["unit"] else ""
+            tol = "" if r["tolerance"] is None else f"{r['tolerance']:g}"
+            L.append(f"| {r['name']} | {_num(r['measured'], r['unit'])}{u} | "
+                     f"{_num(r['reference'], r['unit'])}{u} | {_err(r['rel_error'])} | {tol} |")
+        L.append("")
+    for n in e["notes"]:
+        L += [n, ""]
+    for p in e["plots"]:
+        L += [f"![{p}](validation/{p})", ""]
+    return L
+
+
+def markdown(meta, entries, others=()):
+    """validation.md's lines from the run's metadata (validation-summary.json's) and its entries."""
+    res, wall = meta["res"], meta.get("wall", "tether")
+    how = f"RES={res}" if wall == "tether" else f"WALL={wall} RES={res}"
+    if meta.get("vars"):
+        how += f" VARS=\"{meta['vars']}\""
+    L = [f"# Validation of the cell model ({how})", "", summary(dict(meta, wall=wall), entries, how), "",
+         f"Wall: `{wall}` (lammps-inputs/cell-wall.lmp). "
+         + rp.generated_by(f"{how} bash tools/validate.sh", when=meta["generated_utc"],
+                           note=f"{meta['cpu_count']} cores; each LAMMPS run on {meta['mpi_ranks']} MPI rank(s), NP")
+         + ". Every reference value is computed by `tools/cellmech/validation/references.py` (or "
+         "`tools/membrane.py`) from the paper's formulas and the model parameters; the relative "
+         "error is measured / reference - 1. The tolerance column holds the paper's criterion "
+         "where it states one (the energy bounds are the test suite's). The verdict says whether "
+         "every row of the case that has a tolerance is within it. "
+         "Machine-readable: `validation-summary.json`.",
+         "", "Wall time of a case: the LAMMPS wall time (from the logs) of every run the case "
+         "uses, plus its analysis time (membrane solver, spectra). Runs shared between cases "
+         "(the same inflation, say) are made once and counted in each case that uses them.", ""]
+    L += case_table(entries)
+    for e in entries:
+        L += case_section(e)
+    L += side_by_side(wall, entries, others)
+    L += ["", f"Total time of this invocation: {meta['elapsed_s']:.0f} s."]
+    return L
+
+
 def write(out, res, level, entries, elapsed, wall="tether", others=()):
     os.makedirs(out, exist_ok=True)
     meta = dict(res=res, wall=wall, level=level, generated_utc=datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"),
@@ -94,48 +207,24 @@ def write(out, res, level, entries, elapsed, wall="tether", others=()):
         meta["vars"] = os.environ["VARS"]
     with open(os.path.join(out, "validation-summary.json"), "w") as f:
         json.dump(dict(meta, cases=entries), f, indent=1)
-    how = f"RES={res}" if wall == "tether" else f"WALL={wall} RES={res}"
-    if os.environ.get("VARS"):
-        how += f" VARS=\"{os.environ['VARS']}\""
-    L = [f"# Validation of the cell model ({how})", "",
-         f"Wall: `{wall}` (lammps-inputs/cell-wall.lmp). "
-         f"Generated by `{how} bash tools/validate.sh` on {meta['generated_utc']} "
-         f"({meta['cpu_count']} cores; each LAMMPS run on {meta['mpi_ranks']} MPI rank(s), NP). "
-         "Every reference value is computed by `tools/cellmech/validation/references.py` (or "
-         "`tools/membrane.py`) from the paper's formulas and the model parameters; the relative "
-         "error is measured / reference - 1. The tolerance column holds the paper's criterion "
-         "where it states one (the energy bounds are the test suite's). "
-         "Machine-readable: `validation-summary.json`.",
-         "", "Wall time of a case: the LAMMPS wall time (from the logs) of every run the case "
-         "uses, plus its analysis time (membrane solver, spectra). Runs shared between cases "
-         "(the same inflation, say) are made once and counted in each case that uses them.", "",
-         "| case | status | resolution | wall time | rows within tolerance | largest abs. error | paper |",
-         "|---|---|---|---|---|---|---|"]
-    for e in entries:
-        errs = [abs(r["rel_error"]) for r in e["rows"] if r["rel_error"] is not None]
-        tol = [r for r in e["rows"] if r["tolerance"] is not None and r["rel_error"] is not None]
-        ok = sum(abs(r["rel_error"]) < r["tolerance"] for r in tol)
-        wt = e.get("wall_time_s")
-        L.append(f"| {e['title']} | {e['status']} | {_res(e.get('resolution'))} | "
-                 f"{'—' if wt is None else f'{wt:.0f} s'} | {f'{ok} of {len(tol)}' if tol else '—'} | "
-                 f"{f'{max(errs):.2%}' if errs else '—'} | {e['paper']} |")
-    for e in entries:
-        L += ["", f"## {e['id'].split('-')[0]}. {e['title']}", "",
-              f"*Paper:* {e['paper']}  ", f"*Resolution:* {_res(e.get('resolution'))}  ",
-              f"*Wall time:* {e.get('wall_time_s')} s  ", f"*Status:* {e['status']}", ""]
-        if e["rows"]:
-            L += ["| quantity | measured | reference | rel. error | tolerance |", "|---|---|---|---|---|"]
-            for r in e["rows"]:
-                u = f" {r['unit']}" if r["unit"] else ""
-                tol = "" if r["tolerance"] is None else f"{r['tolerance']:g}"
-                L.append(f"| {r['name']} | {_num(r['measured'], r['unit'])}{u} | "
-                         f"{_num(r['reference'], r['unit'])}{u} | {_err(r['rel_error'])} | {tol} |")
-            L.append("")
-        for n in e["notes"]:
-            L += [n, ""]
-        for p in e["plots"]:
-            L += [f"![{p}](validation/{p})", ""]
-    L += side_by_side(wall, entries, others)
-    L += ["", f"Total time of this invocation: {elapsed:.0f} s."]
-    with open(os.path.join(out, "validation.md"), "w") as f:
-        f.write("\n".join(L) + "\n")
+    rp.write_lines(os.path.join(out, "validation.md"), markdown(dict(meta, elapsed_s=elapsed), entries, others))
+
+
+def main(argv=None):
+    """Write validation.md again from a stored validation-summary.json (its own metadata, the other
+    walls' committed reports beside it at RES=paper): a report's text changes without its runs."""
+    import argparse
+    p = argparse.ArgumentParser(description=main.__doc__)
+    p.add_argument("summary", help="validation-summary.json")
+    p.add_argument("--out", help="folder of the validation.md written (default: the summary's)")
+    a = p.parse_args(argv)
+    s = rp.read_json(a.summary)
+    wall = s.get("wall", "tether")
+    out = a.out or os.path.dirname(os.path.abspath(a.summary))
+    rp.write_lines(os.path.join(out, "validation.md"),
+                   markdown(s, s["cases"], other_walls(s["res"], wall)))
+    print(f"report: {os.path.join(out, 'validation.md')}")
+
+
+if __name__ == "__main__":
+    main()
