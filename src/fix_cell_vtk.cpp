@@ -25,7 +25,7 @@
 
 #include "atom.h"
 #include "cell_fields.h"
-#include "cell_physics.h"
+#include "physics/surface.h"
 #include "cell_topology.h"
 #include "comm.h"
 #include "domain.h"
