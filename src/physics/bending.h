@@ -11,6 +11,9 @@
 #ifndef CELLMECH_PHYSICS_BENDING_H
 #define CELLMECH_PHYSICS_BENDING_H
 
+#include "vec3.h"
+
+#include <array>
 #include <cmath>
 
 namespace CellPhysics {
@@ -62,26 +65,21 @@ inline bool hinge_angle(const double b1[3], const double b2[3], const double b3[
 {
   // F = x_i - x_j, G = x_j - x_k, H = x_l - x_k; A = F x G, B = H x G the triangles' normals
   const double g[3] = {-b2[0], -b2[1], -b2[2]};
-  const double A[3] = {b1[1] * g[2] - b1[2] * g[1], b1[2] * g[0] - b1[0] * g[2],
-                       b1[0] * g[1] - b1[1] * g[0]};
-  const double B[3] = {b3[1] * g[2] - b3[2] * g[1], b3[2] * g[0] - b3[0] * g[2],
-                       b3[0] * g[1] - b3[1] * g[0]};
-  const double a2 = A[0] * A[0] + A[1] * A[1] + A[2] * A[2];
-  const double b2n = B[0] * B[0] + B[1] * B[1] + B[2] * B[2];
-  const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
-  const double f2 = b1[0] * b1[0] + b1[1] * b1[1] + b1[2] * b1[2];
-  const double h2 = b3[0] * b3[0] + b3[1] * b3[1] + b3[2] * b3[2];
+  const std::array<double, 3> A = cross(b1, g), B = cross(b3, g);
+  const double a2 = dot(A, A);
+  const double b2n = dot(B, B);
+  const double g2 = dot(g, g);
+  const double f2 = dot(b1, b1);
+  const double h2 = dot(b3, b3);
   // relative to the edge lengths, so that the test does not depend on the units
   if (!(g2 > 0.0) || !(a2 > 1e-24 * f2 * g2) || !(b2n > 1e-24 * h2 * g2)) return false;
   const double gn = std::sqrt(g2);
-  const double BxA[3] = {B[1] * A[2] - B[2] * A[1], B[2] * A[0] - B[0] * A[2],
-                         B[0] * A[1] - B[1] * A[0]};
-  const double y = (BxA[0] * g[0] + BxA[1] * g[1] + BxA[2] * g[2]) / gn;
-  const double x = A[0] * B[0] + A[1] * B[1] + A[2] * B[2];
+  const double y = dot(cross(B, A), g) / gn;
+  const double x = dot(A, B);
   phi = std::atan2(y, x);
   if (grad) {
-    const double fg = (b1[0] * g[0] + b1[1] * g[1] + b1[2] * g[2]) / (a2 * gn);
-    const double hg = (b3[0] * g[0] + b3[1] * g[1] + b3[2] * g[2]) / (b2n * gn);
+    const double fg = dot(b1, g) / (a2 * gn);
+    const double hg = dot(b3, g) / (b2n * gn);
     for (int d = 0; d < 3; d++) {
       grad[0][d] = -gn / a2 * A[d];
       grad[3][d] = gn / b2n * B[d];
@@ -103,14 +101,9 @@ inline bool hinge_rest(const double B1[3], const double B2[3], const double B3[3
 {
   if (!hinge_angle(B1, B2, B3, rest.phi0)) return false;
   // the triangles' areas: |B1 x B2| / 2 and |B2 x B3| / 2
-  const double n1[3] = {B1[1] * B2[2] - B1[2] * B2[1], B1[2] * B2[0] - B1[0] * B2[2],
-                        B1[0] * B2[1] - B1[1] * B2[0]};
-  const double n2[3] = {B2[1] * B3[2] - B2[2] * B3[1], B2[2] * B3[0] - B2[0] * B3[2],
-                        B2[0] * B3[1] - B2[1] * B3[0]};
-  const double area = 0.5 *
-      (std::sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]) +
-       std::sqrt(n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]));
-  rest.weight = (B2[0] * B2[0] + B2[1] * B2[1] + B2[2] * B2[2]) / area;
+  const std::array<double, 3> n1 = cross(B1, B2), n2 = cross(B2, B3);
+  const double area = 0.5 * (std::sqrt(dot(n1, n1)) + std::sqrt(dot(n2, n2)));
+  rest.weight = dot(B2, B2) / area;
   return true;
 }
 

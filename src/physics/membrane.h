@@ -11,6 +11,9 @@
 #ifndef CELLMECH_PHYSICS_MEMBRANE_H
 #define CELLMECH_PHYSICS_MEMBRANE_H
 
+#include "vec3.h"
+
+#include <array>
 #include <cmath>
 
 namespace CellPhysics {
@@ -44,12 +47,11 @@ struct MembraneRest {
 
 inline bool membrane_rest(const double A[3], const double C[3], MembraneRest &rest)
 {
-  const double la = std::sqrt(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]);
-  const double n[3] = {A[1] * C[2] - A[2] * C[1], A[2] * C[0] - A[0] * C[2],
-                       A[0] * C[1] - A[1] * C[0]};
-  const double ln = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const double la = std::sqrt(dot(A, A));
+  const std::array<double, 3> n = cross(A, C);
+  const double ln = std::sqrt(dot(n, n));
   // relative to the edge lengths, so that the test does not depend on the units
-  const double lc = std::sqrt(C[0] * C[0] + C[1] * C[1] + C[2] * C[2]);
+  const double lc = std::sqrt(dot(C, C));
   if (!(la > 0.0) || !(ln > 1e-12 * la * lc)) return false;
   for (int d = 0; d < 3; d++) rest.e1[d] = A[d] / la;
   // e2 = (n / |n|) x e1
@@ -57,8 +59,8 @@ inline bool membrane_rest(const double A[3], const double C[3], MembraneRest &re
   rest.e2[1] = (n[2] * rest.e1[0] - n[0] * rest.e1[2]) / ln;
   rest.e2[2] = (n[0] * rest.e1[1] - n[1] * rest.e1[0]) / ln;
   // D = [[A.e1, C.e1], [0, C.e2]] is upper triangular
-  const double d11 = la, d12 = C[0] * rest.e1[0] + C[1] * rest.e1[1] + C[2] * rest.e1[2];
-  const double d22 = C[0] * rest.e2[0] + C[1] * rest.e2[1] + C[2] * rest.e2[2];
+  const double d11 = la, d12 = dot(C, rest.e1);
+  const double d22 = dot(C, rest.e2);
   rest.Dinv[0][0] = 1.0 / d11;
   rest.Dinv[0][1] = -d12 / (d11 * d22);
   rest.Dinv[1][0] = 0.0;

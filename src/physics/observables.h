@@ -12,6 +12,8 @@
 #ifndef CELLMECH_PHYSICS_OBSERVABLES_H
 #define CELLMECH_PHYSICS_OBSERVABLES_H
 
+#include "vec3.h"
+
 #include <cmath>
 
 namespace CellPhysics {
@@ -47,7 +49,7 @@ inline double equatorial_force_triangle(const double f[3][3], const double s[3],
 {
   double share = 0.0;
   for (int k = 0; k < 3; k++)
-    if (s[k] > 0.0) share -= f[k][0] * n[0] + f[k][1] * n[1] + f[k][2] * n[2];
+    if (s[k] > 0.0) share -= dot(f[k], n);
   return share;
 }
 

@@ -12,6 +12,9 @@
 #ifndef CELLMECH_PHYSICS_SURFACE_H
 #define CELLMECH_PHYSICS_SURFACE_H
 
+#include "vec3.h"
+
+#include <array>
 #include <cmath>
 
 namespace CellPhysics {
@@ -23,10 +26,8 @@ namespace CellPhysics {
 // Area of the triangle spanned by edge vectors u and w from one vertex.
 inline double triangle_area(const double *u, const double *w)
 {
-  const double cx = u[1] * w[2] - u[2] * w[1];
-  const double cy = u[2] * w[0] - u[0] * w[2];
-  const double cz = u[0] * w[1] - u[1] * w[0];
-  return 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+  const std::array<double, 3> c = cross(u, w);
+  return 0.5 * std::sqrt(dot(c, c));
 }
 
 // Signed volume of the cone from the origin over the triangle (a, a + u, a + w): a . (u x w) / 6.
@@ -34,25 +35,20 @@ inline double triangle_area(const double *u, const double *w)
 // normals, the contract of cell_fields.h) it is the enclosed volume (divergence theorem).
 inline double cone_volume(const double *a, const double *u, const double *w)
 {
-  const double cx = u[1] * w[2] - u[2] * w[1];
-  const double cy = u[2] * w[0] - u[0] * w[2];
-  const double cz = u[0] * w[1] - u[1] * w[0];
-  return (a[0] * cx + a[1] * cy + a[2] * cz) / 6.0;
+  return dot(a, cross(u, w)) / 6.0;
 }
 
 // Signed solid angle of triangle (a, b, c) seen from the origin (van Oosterom & Strackee 1983).
 // Summed over a closed outward-oriented mesh it is 4 pi for a point inside, 0 outside.
 inline double solid_angle(const double *a, const double *b, const double *c)
 {
-  const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-  const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-  const double bxc[3] = {b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2],
-                         b[0] * c[1] - b[1] * c[0]};
-  const double num = a[0] * bxc[0] + a[1] * bxc[1] + a[2] * bxc[2];
-  const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  const double ac = a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
-  const double bc = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
+  const double la = std::sqrt(dot(a, a));
+  const double lb = std::sqrt(dot(b, b));
+  const double lc = std::sqrt(dot(c, c));
+  const double num = dot(a, cross(b, c));
+  const double ab = dot(a, b);
+  const double ac = dot(a, c);
+  const double bc = dot(b, c);
   const double den = la * lb * lc + ab * lc + ac * lb + bc * la;
   return 2.0 * std::atan2(num, den);
 }
@@ -61,9 +57,6 @@ inline double solid_angle(const double *a, const double *b, const double *c)
 // the vertices, edges and face (Ericson, Real-Time Collision Detection, 5.1.5).
 inline double origin_triangle_dist_sq(const double *a, const double *b, const double *c)
 {
-  auto dot = [](const double *u, const double *v) {
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  };
   const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
   const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
   const double ap[3] = {-a[0], -a[1], -a[2]};

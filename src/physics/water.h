@@ -12,6 +12,8 @@
 #ifndef CELLMECH_PHYSICS_WATER_H
 #define CELLMECH_PHYSICS_WATER_H
 
+#include "vec3.h"
+
 namespace CellPhysics {
 
 /* ---------------------------------------------------------------------
@@ -62,9 +64,9 @@ inline double exposed_area(double A, double A_ref, double A_glued_ref)
 // the normal line crosses that wall inside one of its triangles, within h/sqrt(3) of a node.
 inline bool hides_triangle(const double *d, const double *n, double h)
 {
-  const double s = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+  const double s = dot(d, n);
   if (s <= 0.0) return false;
-  const double lateral2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - s * s;
+  const double lateral2 = dot(d, d) - s * s;
   const double r = s > h ? s : h;
   return lateral2 <= r * r;
 }
