@@ -5,7 +5,7 @@
    Every wall triangle (an angle a-b-c of the topology, written by cellgen.py
    with b its central node) is a constant-strain element of an incompressible
    thin Neo-Hookean sheet of shear modulus G and thickness t0 (Eq. M1 in
-   cell_physics.h), measured against the triangle's own rest shape: the
+   physics/membrane.h), measured against the triangle's own rest shape: the
    reference positions d2_cellref of its nodes, the same per-atom array the
    tethers take their rest lengths from. The forces are the exact gradient
    of that energy (Eq. M2), so energy, momentum and angular momentum are
@@ -27,7 +27,6 @@
 
 #include "atom.h"
 #include "bond.h"
-#include "cell_physics.h"
 #include "cell_restart.h"
 #include "comm.h"
 #include "error.h"
@@ -36,6 +35,8 @@
 #include "math_const.h"
 #include "memory.h"
 #include "neighbor.h"
+#include "physics/damping.h"
+#include "physics/membrane.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
    The middle lamella glues the walls of neighbouring cells. A lamella bond
    joins two wall nodes of DIFFERENT cells (molecule IDs) and carries the
-   cohesive law of cell_physics.h (Xu & Needleman, Eqs. L1-L5) over the
+   cohesive law of physics/lamella.h (Xu & Needleman, Eqs. L1-L5) over the
    wall area it stands for, A = (alam_i + alam_j)/2, where d_alam is each
    node's tributary wall area divided by its number of lamella bonds: the
    force of an interface is then the traction times its area whatever the
@@ -27,7 +27,6 @@
 
 #include "atom.h"
 #include "cell_mpi.h"
-#include "cell_physics.h"
 #include "cell_restart.h"
 #include "cell_topology.h"
 #include "comm.h"
@@ -36,6 +35,8 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "physics/damping.h"
+#include "physics/lamella.h"
 #include "update.h"
 
 #include <algorithm>

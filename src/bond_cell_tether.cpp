@@ -17,7 +17,6 @@
 
 #include "atom.h"
 #include "cell_checks.h"
-#include "cell_physics.h"
 #include "cell_restart.h"
 #include "cell_simd.h"
 #include "cell_topology.h"
@@ -28,6 +27,8 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "physics/damping.h"
+#include "physics/tether.h"
 #include "update.h"
 
 #include <algorithm>

@@ -10,12 +10,12 @@
 #include "cell_fields.h"
 #include "cell_index.h"
 #include "cell_mpi.h"
-#include "cell_physics.h"
 #include "cell_sums.h"
 #include "cell_topology.h"
 #include "cell_water.h"
 #include "lammps.h"
 #include "neighbor.h"
+#include "physics/water.h"
 
 using namespace LAMMPS_NS;
 using namespace CellPhysics;

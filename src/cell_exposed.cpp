@@ -6,11 +6,11 @@
 #include "cell_exposed.h"
 
 #include "atom.h"
-#include "cell_physics.h"
 #include "cell_topology.h"
 #include "lammps.h"
 #include "neighbor.h"
 #include "pair_cell_sph.h"
+#include "physics/water.h"
 
 #include <cmath>
 

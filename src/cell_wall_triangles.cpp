@@ -10,10 +10,10 @@
 #include "cell_exposed.h"
 #include "cell_fields.h"
 #include "cell_index.h"
-#include "cell_physics.h"
 #include "cell_sums.h"
 #include "cell_topology.h"
 #include "neighbor.h"
+#include "physics/surface.h"
 
 using namespace LAMMPS_NS;
 using namespace CellPhysics;

@@ -8,10 +8,11 @@
 
 #include "cell_exchange.h"
 #include "cell_index.h"
-#include "cell_physics.h"
 #include "cell_sums.h"
 #include "cell_water_settings.h"
 #include "pair_cell_sph.h"
+#include "physics/osmosis.h"
+#include "physics/water.h"
 
 using namespace LAMMPS_NS;
 using namespace CellPhysics;

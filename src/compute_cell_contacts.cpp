@@ -34,10 +34,9 @@
 #include "compute_cell_contacts.h"
 
 #include "atom.h"
-#include "cell_fields.h"
 #include "bond.h"
+#include "cell_fields.h"
 #include "cell_mpi.h"
-#include "cell_physics.h"
 #include "cell_topology.h"
 #include "comm.h"
 #include "compute_cell_props.h"
@@ -51,6 +50,7 @@
 #include "neighbor.h"
 #include "pair.h"
 #include "pair_cell_sph.h"
+#include "physics/surface.h"
 #include "update.h"
 
 #include <array>

@@ -36,7 +36,6 @@
 #include "bond.h"
 #include "bond_cell_tether.h"
 #include "cell_mpi.h"
-#include "cell_physics.h"
 #include "cell_sums.h"
 #include "cell_topology.h"
 #include "comm.h"
@@ -51,6 +50,8 @@
 #include "neighbor.h"
 #include "pair.h"
 #include "pair_cell_sph.h"
+#include "physics/observables.h"
+#include "physics/surface.h"
 #include "update.h"
 
 #include <cmath>

@@ -18,7 +18,6 @@
 #include "compute_cell_shear_atom.h"
 
 #include "atom.h"
-#include "cell_physics.h"
 #include "cell_topology.h"
 #include "comm.h"
 #include "domain.h"
@@ -29,6 +28,8 @@
 #include "neighbor.h"
 #include "pair.h"
 #include "pair_cell_sph.h"
+#include "physics/kernel.h"
+#include "physics/observables.h"
 #include "update.h"
 
 #include <cmath>

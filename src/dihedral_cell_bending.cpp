@@ -5,7 +5,7 @@
    Bending stiffness of the cell wall. Every pair of wall triangles sharing
    an edge is a LAMMPS dihedral i-j-k-l with j-k the shared edge (written by
    cellgen.py --bending), a hinge of the discrete-shells energy (Eq. B2 in
-   cell_physics.h) with the plate bending stiffness D = G t0^3 / 3 of the
+   physics/bending.h) with the plate bending stiffness D = G t0^3 / 3 of the
    wall (Eq. B1: E = 3G, nu = 1/2). The hinge bends against its own rest
    dihedral angle, from the reference positions d2_cellref of its nodes (the
    same per-atom array the tethers and membrane elements take their rest
@@ -23,13 +23,13 @@
 #include "cell_fields.h"
 
 #include "atom.h"
-#include "cell_physics.h"
 #include "cell_restart.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
 #include "neighbor.h"
+#include "physics/bending.h"
 
 #include <cmath>
 #include <cstring>

@@ -42,6 +42,7 @@
 
 #include "atom.h"
 #include "error.h"
+#include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "output.h"
@@ -55,11 +56,32 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixCellFailure::FixCellFailure(LAMMPS *_lmp, int narg, char **arg) :
-    Fix(_lmp, narg, arg), deferred(0), stale(0), since_build(0), forgiven_at(-1)
+    Fix(_lmp, narg, arg), count(nullptr), deferred(0), stale(0), since_build(0), forgiven_at(-1)
 {
   nevery = 1;
   force_reneighbor = 1;
   next_reneighbor = -1;
+}
+
+// the per-atom counts, zero, kept by atom->grow (and sort, exchange) and in restarts
+void FixCellFailure::add_counts()
+{
+  restart_peratom = 1;
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+  peratom_freq = 1;
+  FixCellFailure::grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) count[i] = 0.0;
+}
+
+FixCellFailure::~FixCellFailure()
+{
+  if (!count) return;    // add_counts not reached: nothing registered
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(count);
 }
 
 int FixCellFailure::setmask()
@@ -176,4 +198,54 @@ void FixCellFailure::forgive_build()
   }
   neighbor->ndanger--;
   forgiven_at = update->ntimestep;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCellFailure::grow_arrays(int nmax)
+{
+  memory->grow(count, nmax, "cell_failure:count");
+  vector_atom = count;
+}
+
+void FixCellFailure::copy_arrays(int i, int j, int /*delflag*/)
+{
+  count[j] = count[i];
+}
+
+int FixCellFailure::pack_exchange(int i, double *buf)
+{
+  buf[0] = count[i];
+  return 1;
+}
+
+int FixCellFailure::unpack_exchange(int nlocal, double *buf)
+{
+  count[nlocal] = buf[0];
+  return 1;
+}
+
+int FixCellFailure::pack_restart(int i, double *buf)
+{
+  buf[0] = 2;    // values for this atom, including this count (LAMMPS convention)
+  buf[1] = count[i];
+  return 2;
+}
+
+void FixCellFailure::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  count[nlocal] = extra[nlocal][m + 1];
+}
+
+int FixCellFailure::maxsize_restart()
+{
+  return 2;
+}
+
+int FixCellFailure::size_restart(int /*nlocal*/)
+{
+  return 2;
 }

@@ -2,7 +2,9 @@
    SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: the common part of the internal fixes that keep the books of
    wall and lamella failure (CELL_TETHER_BREAK, CELL_LAMELLA_BREAK): when
-   a failure found on one rank reaches the others. Not a style itself.
+   a failure found on one rank reaches the others, and the per-atom count
+   of the failures at each node (kept through migration and restarts).
+   Not a style itself.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_CELL_FAILURE_H
@@ -15,6 +17,7 @@ namespace LAMMPS_NS {
 class FixCellFailure : public Fix {
  public:
   FixCellFailure(class LAMMPS *, int, char **);
+  ~FixCellFailure() override;
 
   int setmask() override;
   void init() override;
@@ -23,6 +26,16 @@ class FixCellFailure : public Fix {
   void pre_exchange() override;
   void end_of_step() override;
   void post_run() override;
+
+  // the per-atom counts (count below) through atom sorting, migration and restarts
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int maxsize_restart() override;
+  int size_restart(int) override;
 
   // A style that can fail calls failed() for each failure it finds on this rank (after keeping
   // it in the derived fix's pending list) and computed() at the end of every force computation,
@@ -46,6 +59,10 @@ class FixCellFailure : public Fix {
   static const double *built_counts(class LAMMPS *lmp, const char *id);
 
  protected:
+  // per atom: the failures that ended at this node (broken tethers, debonded lamella bonds), the
+  // fix's vector_atom; null until the derived constructor, its arguments checked, calls add_counts
+  double *count;
+  void add_counts();
   // gather the pending failures of all ranks and apply them on every rank; true if there were any
   // anywhere. Collective.
   virtual bool flush() = 0;

@@ -17,7 +17,7 @@
    call) lets the pressure lag the motion and pumps energy into the
    acoustic modes at a rate ~ (c k)^2 dt: unstable at the wall's time steps.
    The osmotic uptake of a step is Eq. 10 linearised in its own effect on
-   the pressure (osmotic_mass_step in cell_physics.h), stable for the large
+   the pressure (osmotic_mass_step in physics/osmosis.h), stable for the large
    Lp that inflate a cell. Under run_style respa they advance on the
    outermost level, with the SPH forces, by its step; with only the wall's
    elements on the inner levels (they act on wall nodes), the fluid's
@@ -44,7 +44,6 @@
 #include "atom.h"
 #include "cell_checks.h"
 #include "cell_exposed.h"
-#include "cell_physics.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_cell_tether_break.h"
@@ -54,6 +53,7 @@
 #include "neighbor.h"
 #include "pair.h"
 #include "pair_cell_sph.h"
+#include "physics/sph.h"
 #include "respa.h"
 #include "update.h"
 

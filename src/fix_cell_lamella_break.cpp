@@ -43,13 +43,12 @@ static constexpr int NCOLS = 6;    // cell i, cell j, count, area, t_first, t_la
 /* ---------------------------------------------------------------------- */
 
 FixCellLamellaBreak::FixCellLamellaBreak(LAMMPS *_lmp, int narg, char **arg) :
-    FixCellFailure(_lmp, narg, arg), ndebond(nullptr), ntotal(0), logfp(nullptr)
+    FixCellFailure(_lmp, narg, arg), ntotal(0), logfp(nullptr)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal fix CELL_LAMELLA_BREAK command: expected no arguments, got {}",
                narg - 3);
   restart_global = 1;
-  restart_peratom = 1;
   scalar_flag = 1;
   extscalar = 0;
   array_flag = 1;
@@ -58,21 +57,11 @@ FixCellLamellaBreak::FixCellLamellaBreak(LAMMPS *_lmp, int narg, char **arg) :
   size_array_rows_variable = 1;
   extarray = 0;
   global_freq = 1;
-  peratom_flag = 1;
-  size_peratom_cols = 0;
-  peratom_freq = 1;
-
-  FixCellLamellaBreak::grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; i++) ndebond[i] = 0.0;
+  add_counts();    // count: the lamella bonds debonded at each node
 }
 
 FixCellLamellaBreak::~FixCellLamellaBreak()
 {
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(ndebond);
   if (logfp) fclose(logfp);
 }
 
@@ -192,7 +181,7 @@ void FixCellLamellaBreak::apply(const std::vector<Event> &events)
     for (int side = 0; side < 2; side++) {
       const int i = atom->map(side ? e.tag2 : e.tag1);
       if (i < 0 || i >= nlocal) continue;
-      ndebond[i] += 1.0;
+      count[i] += 1.0;
       CellMech::remove_special12(atom, i, side ? e.tag1 : e.tag2);
     }
     const auto key = std::make_pair(std::min(e.mol1, e.mol2), std::max(e.mol1, e.mol2));
@@ -237,56 +226,4 @@ void FixCellLamellaBreak::restart(char *buf)
     table[key] = Debond{static_cast<int>(r[2]), r[3], r[4], r[5]};
   }
   update_rows();
-}
-
-/* ---------------------------------------------------------------------- */
-
-void FixCellLamellaBreak::grow_arrays(int nmax)
-{
-  memory->grow(ndebond, nmax, "cell_lamella_break:ndebond");
-  vector_atom = ndebond;
-}
-
-void FixCellLamellaBreak::copy_arrays(int i, int j, int /*delflag*/)
-{
-  ndebond[j] = ndebond[i];
-}
-
-int FixCellLamellaBreak::pack_exchange(int i, double *buf)
-{
-  buf[0] = ndebond[i];
-  return 1;
-}
-
-int FixCellLamellaBreak::unpack_exchange(int nlocal, double *buf)
-{
-  ndebond[nlocal] = buf[0];
-  return 1;
-}
-
-/* ---------------------------------------------------------------------- */
-
-int FixCellLamellaBreak::pack_restart(int i, double *buf)
-{
-  buf[0] = 2;    // values for this atom, including this count (LAMMPS convention)
-  buf[1] = ndebond[i];
-  return 2;
-}
-
-void FixCellLamellaBreak::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  ndebond[nlocal] = extra[nlocal][m + 1];
-}
-
-int FixCellLamellaBreak::maxsize_restart()
-{
-  return 2;
-}
-
-int FixCellLamellaBreak::size_restart(int /*nlocal*/)
-{
-  return 2;
 }

@@ -56,17 +56,8 @@ class FixCellLamellaBreak : public FixCellFailure {
 
   void write_restart(FILE *) override;
   void restart(char *) override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int maxsize_restart() override;
-  int size_restart(int) override;
 
  protected:
-  double *ndebond;               // per atom: lamella bonds debonded at this node
   std::vector<Event> pending;    // found on this rank since the last sync (FixCellFailure)
   std::map<std::pair<tagint, tagint>, Debond> table;
   std::vector<std::vector<double>> rows;    // the table as compute_array() gives it

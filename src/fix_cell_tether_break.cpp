@@ -52,28 +52,13 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixCellTetherBreak::FixCellTetherBreak(LAMMPS *_lmp, int narg, char **arg) :
-    FixCellFailure(_lmp, narg, arg), nbroken(nullptr)
+    FixCellFailure(_lmp, narg, arg)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix CELL_TETHER_BREAK command: expected no arguments");
-  restart_peratom = 1;
   scalar_flag = 1;
   global_freq = 1;
   extscalar = 0;
-  peratom_flag = 1;
-  size_peratom_cols = 0;
-  peratom_freq = 1;
-
-  FixCellTetherBreak::grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; i++) nbroken[i] = 0.0;
-}
-
-FixCellTetherBreak::~FixCellTetherBreak()
-{
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(nbroken);
+  add_counts();    // count: the broken tethers (opened wall edges) that ended at each node
 }
 
 double FixCellTetherBreak::compute_scalar()
@@ -81,7 +66,7 @@ double FixCellTetherBreak::compute_scalar()
   sync();
   // every broken tether is counted at both of its nodes
   double mine = 0.0, all = 0.0;
-  for (int i = 0; i < atom->nlocal; i++) mine += nbroken[i];
+  for (int i = 0; i < atom->nlocal; i++) mine += count[i];
   MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, world);
   return 0.5 * all;
 }
@@ -159,7 +144,7 @@ void FixCellTetherBreak::apply(const std::vector<std::pair<tagint, tagint>> &pai
   for (const auto &p : pairs)
     for (const tagint t : {p.first, p.second}) {
       const int i = atom->map(t);
-      if (i >= 0 && i < atom->nlocal) nbroken[i] += 1.0;
+      if (i >= 0 && i < atom->nlocal) count[i] += 1.0;
     }
   // the bond style has taken the tethers out of the bond arrays already
   CellMech::release_edges(lmp, pairs, false);
@@ -243,61 +228,9 @@ void FixCellTetherBreak::apply_triangles(const std::vector<std::array<tagint, 3>
     if (before[k] >= 2 && after < 2)
       for (const tagint t : {edges[k].first, edges[k].second}) {
         const int i = atom->map(t);
-        if (i >= 0 && i < nlocal) nbroken[i] += 1.0;
+        if (i >= 0 && i < nlocal) count[i] += 1.0;
       }
     if (after <= 0) released.push_back(edges[k]);
   }
   CellMech::release_edges(lmp, released, true);
-}
-
-/* ---------------------------------------------------------------------- */
-
-void FixCellTetherBreak::grow_arrays(int nmax)
-{
-  memory->grow(nbroken, nmax, "cell_tether_break:nbroken");
-  vector_atom = nbroken;
-}
-
-void FixCellTetherBreak::copy_arrays(int i, int j, int /*delflag*/)
-{
-  nbroken[j] = nbroken[i];
-}
-
-int FixCellTetherBreak::pack_exchange(int i, double *buf)
-{
-  buf[0] = nbroken[i];
-  return 1;
-}
-
-int FixCellTetherBreak::unpack_exchange(int nlocal, double *buf)
-{
-  nbroken[nlocal] = buf[0];
-  return 1;
-}
-
-/* ---------------------------------------------------------------------- */
-
-int FixCellTetherBreak::pack_restart(int i, double *buf)
-{
-  buf[0] = 2;    // values for this atom, including this count (LAMMPS convention)
-  buf[1] = nbroken[i];
-  return 2;
-}
-
-void FixCellTetherBreak::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  nbroken[nlocal] = extra[nlocal][m + 1];
-}
-
-int FixCellTetherBreak::maxsize_restart()
-{
-  return 2;
-}
-
-int FixCellTetherBreak::size_restart(int /*nlocal*/)
-{
-  return 2;
 }

@@ -29,7 +29,6 @@ class FixCellTetherBreak : public FixCellFailure {
   static constexpr const char *ID = "cell_broken";
 
   FixCellTetherBreak(class LAMMPS *, int, char **);
-  ~FixCellTetherBreak() override;
   double compute_scalar() override;
 
   // the fix of this run, created if there is none yet (bond and angle styles that can fail)
@@ -40,17 +39,7 @@ class FixCellTetherBreak : public FixCellFailure {
   // a wall triangle failed on this rank (angle style cell/membrane); it has left the angle list
   void triangle_failed(tagint a, tagint b, tagint c);
 
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int maxsize_restart() override;
-  int size_restart(int) override;
-
  protected:
-  double *nbroken;    // per atom: broken tethers (opened wall edges) that ended at this node
   // found on this rank since the last sync (FixCellFailure)
   std::vector<std::pair<tagint, tagint>> pending_tethers;
   std::vector<std::array<tagint, 3>> pending_triangles;

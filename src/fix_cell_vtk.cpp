@@ -25,7 +25,6 @@
 
 #include "atom.h"
 #include "cell_fields.h"
-#include "cell_physics.h"
 #include "cell_topology.h"
 #include "comm.h"
 #include "domain.h"
@@ -36,6 +35,7 @@
 #include "group.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "physics/surface.h"
 #include "update.h"
 
 #include <cmath>
@@ -100,36 +100,145 @@ void FixCellVTK::end_of_step()
   write();
 }
 
+// The records gathered to rank 0, as doubles: per wall node of the group its ID, molecule,
+// unwrapped position, displacement from the reference and failure counts; per wall triangle its
+// three node IDs (in the order that gives the outward normal, cell_fields.h), the molecule of its
+// central node, its area strain and its largest tether stretch.
+namespace {
+enum PointField { P_ID, P_MOL, P_X, P_DX = P_X + 3, P_BROKEN = P_DX + 3, P_DEBONDED, NP };
+enum TriangleField { T_NODES, T_MOL = T_NODES + 3, T_STRAIN, T_STRETCH, NT };
+
+// every rank's records concatenated in rank order on rank 0 (empty elsewhere)
+std::vector<double> gather_to_root(const std::vector<double> &local, int me, int nprocs,
+                                   MPI_Comm world)
+{
+  int n = local.size();
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+  int total = 0;
+  if (me == 0)
+    for (int p = 0; p < nprocs; p++) {
+      displs[p] = total;
+      total += counts[p];
+    }
+  std::vector<double> all(me == 0 ? total : 0);
+  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0,
+              world);
+  return all;
+}
+
+void write_points(FILE *fp, const std::vector<double> &points)
+{
+  const int np = points.size() / NP;
+  fmt::print(fp, "POINTS {} double\n", np);
+  for (int p = 0; p < np; p++)
+    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[NP * p + P_X], points[NP * p + P_X + 1],
+               points[NP * p + P_X + 2]);
+}
+
+// The triangles as polygons over the points' indices; returns the triangles written: those whose
+// three nodes are all points (all in the group).
+std::vector<int> write_polygons(FILE *fp, const std::vector<double> &points,
+                                const std::vector<double> &triangles)
+{
+  const int np = points.size() / NP, nt = triangles.size() / NT;
+  std::unordered_map<tagint, int> index;
+  for (int p = 0; p < np; p++) index[(tagint) points[NP * p + P_ID]] = p;
+  std::vector<int> kept;
+  std::string polys;
+  for (int t = 0; t < nt; t++) {
+    const double *c = &triangles[NT * t + T_NODES];
+    auto a = index.find((tagint) c[0]), b = index.find((tagint) c[1]),
+         d = index.find((tagint) c[2]);
+    if (a == index.end() || b == index.end() || d == index.end()) continue;    // node not in group
+    polys += fmt::format("3 {} {} {}\n", a->second, b->second, d->second);
+    kept.push_back(t);
+  }
+  fmt::print(fp, "POLYGONS {} {}\n{}", kept.size(), 4 * kept.size(), polys);
+  return kept;
+}
+
+void write_point_data(FILE *fp, const std::vector<double> &points)
+{
+  const int np = points.size() / NP;
+  fmt::print(fp, "POINT_DATA {}\nSCALARS id int 1\nLOOKUP_TABLE default\n", np);
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[NP * p + P_ID]);
+  fmt::print(fp, "SCALARS cell int 1\nLOOKUP_TABLE default\n");
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[NP * p + P_MOL]);
+  fmt::print(fp, "VECTORS displacement double\n");
+  for (int p = 0; p < np; p++)
+    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[NP * p + P_DX], points[NP * p + P_DX + 1],
+               points[NP * p + P_DX + 2]);
+  fmt::print(fp, "SCALARS broken int 1\nLOOKUP_TABLE default\n");
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (int) points[NP * p + P_BROKEN]);
+  fmt::print(fp, "SCALARS debonded int 1\nLOOKUP_TABLE default\n");
+  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (int) points[NP * p + P_DEBONDED]);
+}
+
+void write_cell_data(FILE *fp, const std::vector<double> &triangles, const std::vector<int> &kept)
+{
+  fmt::print(fp, "CELL_DATA {}\n", kept.size());
+  fmt::print(fp, "SCALARS cell int 1\nLOOKUP_TABLE default\n");
+  for (int t : kept) fmt::print(fp, "{}\n", (int) triangles[NT * t + T_MOL]);
+  fmt::print(fp, "SCALARS area_strain double 1\nLOOKUP_TABLE default\n");
+  for (int t : kept) fmt::print(fp, "{:.10g}\n", triangles[NT * t + T_STRAIN]);
+  fmt::print(fp, "SCALARS max_stretch double 1\nLOOKUP_TABLE default\n");
+  for (int t : kept) fmt::print(fp, "{:.10g}\n", triangles[NT * t + T_STRETCH]);
+}
+}    // namespace
+
 void FixCellVTK::write()
+{
+  const std::vector<double> points = gather_to_root(local_points(), comm->me, comm->nprocs, world);
+  const std::vector<double> triangles =
+      gather_to_root(local_triangles(), comm->me, comm->nprocs, world);
+  if (comm->me != 0) return;
+
+  const std::string file = fmt::format("{}.{}.vtk", prefix, update->ntimestep);
+  FILE *fp = fopen(file.c_str(), "w");
+  if (!fp) error->one(FLERR, "fix cell/vtk: cannot open {} for writing", file);
+  fmt::print(fp, "# vtk DataFile Version 3.0\ncellmech walls, step {}\nASCII\nDATASET POLYDATA\n",
+             update->ntimestep);
+  write_points(fp, points);
+  const std::vector<int> kept = write_polygons(fp, points, triangles);
+  write_point_data(fp, points);
+  write_cell_data(fp, triangles, kept);
+  fclose(fp);
+}
+
+// this rank's wall nodes of the group (PointField records)
+std::vector<double> FixCellVTK::local_points()
 {
   double **x = atom->x;
   double **ref = atom->darray[iref];
-  tagint *tag = atom->tag;
-  tagint *molecule = atom->molecule;
-  int *mask = atom->mask;
-
-  // points: id, molecule, unwrapped position, displacement from the reference, broken tethers
   const double *nbroken = FixCellFailure::synced_counts(lmp, FixCellTetherBreak::ID);
   const double *ndebonded = FixCellFailure::synced_counts(lmp, FixCellLamellaBreak::ID);
   const CellMech::WallNodes is_wall(lmp);
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit) || !is_wall(i)) continue;
+    if (!(atom->mask[i] & groupbit) || !is_wall(i)) continue;
     double xu[3];
     domain->unmap(x[i], atom->image[i], xu);
     mine.insert(mine.end(),
-                {(double) tag[i], (double) molecule[i], xu[0], xu[1], xu[2], xu[0] - ref[i][0],
-                 xu[1] - ref[i][1], xu[2] - ref[i][2], nbroken ? nbroken[i] : 0.0,
-                 ndebonded ? ndebonded[i] : 0.0});
+                {(double) atom->tag[i], (double) atom->molecule[i], xu[0], xu[1], xu[2],
+                 xu[0] - ref[i][0], xu[1] - ref[i][1], xu[2] - ref[i][2],
+                 nbroken ? nbroken[i] : 0.0, ndebonded ? ndebonded[i] : 0.0});
   }
-  // triangles: three IDs, molecule, area strain, largest tether stretch (a broken tether has
-  // taken its triangles out of the topology: the crack is a hole in the surface). Their order
-  // gives the outward normal and their central node the group (contract: cell_fields.h).
+  return mine;
+}
+
+// this rank's wall triangles whose central node is in the group (TriangleField records). A broken
+// tether has taken its triangles out of the topology: the crack is a hole in the surface.
+std::vector<double> FixCellVTK::local_triangles()
+{
+  double **x = atom->x;
+  double **ref = atom->darray[iref];
+  tagint *tag = atom->tag;
   std::vector<double> tris;
   CellMech::for_each_wall_triangle(
       neighbor->anglelist, neighbor->nanglelist, [&](int, int a, int b, int c) {
         const int v[3] = {a, b, c};
-        if (!(mask[v[1]] & groupbit)) return;
+        if (!(atom->mask[v[1]] & groupbit)) return;
         double e[3][3], e0[3][3], stretch = 0.0;
         for (int k = 0; k < 3; k++) {
           const int a = v[k], b = v[(k + 1) % 3];
@@ -146,77 +255,7 @@ void FixCellVTK::write()
             CellPhysics::triangle_area(e[0], e[1]) / CellPhysics::triangle_area(e0[0], e0[1]) - 1.0;
         tris.insert(tris.end(),
                     {(double) tag[v[0]], (double) tag[v[1]], (double) tag[v[2]],
-                     (double) molecule[v[1]], strain, stretch});
+                     (double) atom->molecule[v[1]], strain, stretch});
       });
-
-  auto gather = [&](std::vector<double> &local) {
-    int n = local.size();
-    std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
-    int total = 0;
-    if (comm->me == 0)
-      for (int p = 0; p < comm->nprocs; p++) {
-        displs[p] = total;
-        total += counts[p];
-      }
-    std::vector<double> all(comm->me == 0 ? total : 0);
-    MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                0, world);
-    return all;
-  };
-  std::vector<double> points = gather(mine), cells = gather(tris);
-  if (comm->me != 0) return;
-
-  const int NP = 10;    // values per point
-  const int np = points.size() / NP, nt = cells.size() / 6;
-  std::unordered_map<tagint, int> index;
-  for (int p = 0; p < np; p++) index[(tagint) points[NP * p]] = p;
-
-  const std::string file = fmt::format("{}.{}.vtk", prefix, update->ntimestep);
-  FILE *fp = fopen(file.c_str(), "w");
-  if (!fp) error->one(FLERR, "fix cell/vtk: cannot open {} for writing", file);
-  fmt::print(fp, "# vtk DataFile Version 3.0\ncellmech walls, step {}\nASCII\nDATASET POLYDATA\n",
-             update->ntimestep);
-  fmt::print(fp, "POINTS {} double\n", np);
-  for (int p = 0; p < np; p++)
-    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[NP * p + 2], points[NP * p + 3],
-               points[NP * p + 4]);
-  int nkept = 0;
-  std::string polys;
-  for (int t = 0; t < nt; t++) {
-    const double *c = &cells[6 * t];
-    auto a = index.find((tagint) c[0]), b = index.find((tagint) c[1]),
-         d = index.find((tagint) c[2]);
-    if (a == index.end() || b == index.end() || d == index.end()) continue;    // node not in group
-    polys += fmt::format("3 {} {} {}\n", a->second, b->second, d->second);
-    nkept++;
-  }
-  fmt::print(fp, "POLYGONS {} {}\n{}", nkept, 4 * nkept, polys);
-  fmt::print(fp, "POINT_DATA {}\nSCALARS id int 1\nLOOKUP_TABLE default\n", np);
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[NP * p]);
-  fmt::print(fp, "SCALARS cell int 1\nLOOKUP_TABLE default\n");
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (tagint) points[NP * p + 1]);
-  fmt::print(fp, "VECTORS displacement double\n");
-  for (int p = 0; p < np; p++)
-    fmt::print(fp, "{:.10g} {:.10g} {:.10g}\n", points[NP * p + 5], points[NP * p + 6],
-               points[NP * p + 7]);
-  fmt::print(fp, "SCALARS broken int 1\nLOOKUP_TABLE default\n");
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (int) points[NP * p + 8]);
-  fmt::print(fp, "SCALARS debonded int 1\nLOOKUP_TABLE default\n");
-  for (int p = 0; p < np; p++) fmt::print(fp, "{}\n", (int) points[NP * p + 9]);
-  fmt::print(fp, "CELL_DATA {}\n", nkept);
-  const char *names[3] = {"cell", "area_strain", "max_stretch"};
-  for (int f = 0; f < 3; f++) {
-    fmt::print(fp, "SCALARS {} {} 1\nLOOKUP_TABLE default\n", names[f], f == 0 ? "int" : "double");
-    for (int t = 0; t < nt; t++) {
-      const double *c = &cells[6 * t];
-      if (!index.count((tagint) c[0]) || !index.count((tagint) c[1]) || !index.count((tagint) c[2]))
-        continue;
-      if (f == 0)
-        fmt::print(fp, "{}\n", (int) c[3]);
-      else
-        fmt::print(fp, "{:.10g}\n", c[3 + f]);
-    }
-  }
-  fclose(fp);
+  return tris;
 }

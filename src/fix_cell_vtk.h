@@ -16,6 +16,7 @@ FixStyle(cell/vtk,FixCellVTK);
 #include "fix.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -32,6 +33,8 @@ class FixCellVTK : public Fix {
   int iref;    // reference positions d2_cellref
 
   void write();
+  std::vector<double> local_points();
+  std::vector<double> local_triangles();
 };
 
 }    // namespace LAMMPS_NS

@@ -14,13 +14,14 @@
 #include "cell_compat.h"
 
 #include "atom.h"
-#include "cell_physics.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "physics/damping.h"
+#include "physics/lj84.h"
 
 #include <cmath>
 #include <cstring>

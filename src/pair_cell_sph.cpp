@@ -26,7 +26,6 @@
 #include "cell_simd.h"
 
 #include "atom.h"
-#include "cell_physics.h"
 #include "cell_topology.h"
 #include "comm.h"
 #include "error.h"
@@ -35,6 +34,9 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "physics/kernel.h"
+#include "physics/sph.h"
+#include "physics/tait.h"
 #include "respa.h"
 #include "update.h"
 

@@ -15,8 +15,8 @@ PairStyle(cell/sph,PairCellSPH);
 #define LMP_PAIR_CELL_SPH_H
 
 #include "atom.h"
-#include "cell_physics.h"
 #include "pair.h"
+#include "physics/tait.h"
 
 namespace LAMMPS_NS {
 

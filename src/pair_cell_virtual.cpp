@@ -25,7 +25,6 @@
 
 #include "atom.h"
 #include "atom_vec.h"
-#include "cell_physics.h"
 #include "cell_topology.h"
 #include "comm.h"
 #include "error.h"
@@ -33,6 +32,8 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "physics/damping.h"
+#include "physics/lj84.h"
 #include "update.h"
 
 #include <cmath>

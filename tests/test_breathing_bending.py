@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 11: in-vacuo breathing of the bending wall (membrane + hinges) below the classical
-buckling stress of a spherical shell, and its buckling above it (Eqs. S1-S5 of cell_physics.h;
+buckling stress of a spherical shell, and its buckling above it (Eqs. S1-S5 of physics/shell.h;
 settings and analysis in cellmech.validation.bending, shared with validation case 8).
 
 1. Stiff wall of Table I (t0 = 0.126 um, R = 30 um): sigma_c = E t/(R sqrt(3(1 - nu^2))) = 6.72 MPa,

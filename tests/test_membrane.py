@@ -220,7 +220,7 @@ def main():
     from scipy.integrate import quad
     from scipy.optimize import brentq
 
-    def bond(lam):          # Eq. 19 bond energy per G t0 l0^2 / sqrt3 (cell_physics.h)
+    def bond(lam):          # Eq. 19 bond energy per G t0 l0^2 / sqrt3 (physics/tether.h)
         return 0.5 * lam * lam - 0.75 + 0.25 * lam ** -4
 
     werr, terr = 0.0, 0.0

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Dihedral style cell/bending (the wall's bending stiffness, Eqs. B1-B3) inside LAMMPS; one hinge
 against its closed form and the forces against the energy's finite-difference gradient are in
-tests/unit/test_physics.cpp (BendingHinge).
+tests/unit/physics/test_bending.cpp (BendingHinge).
 
 1. Walls at rest store no bending energy, whatever their curvature: a level-3 cell and a two-cell
    tissue from cellgen --bending give zero energy and force (the hinges bend against their rest

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Angle style cell/membrane (the wall as Neo-Hookean membrane elements) inside LAMMPS, on a
 level-3 wall without fluid (642 nodes, 1280 triangles); the single element against the closed
-forms is in tests/unit/test_physics.cpp (MembraneElement).
+forms is in tests/unit/physics/test_membrane.cpp (MembraneElement).
 
 1. Uniform scaling of the wall by lam about its centre stretches every triangle equibiaxially, so
    the wall's energy is exactly (G t0 A0 / 2)(2 lam^2 + lam^-4 - 3) with A0 the reference area,

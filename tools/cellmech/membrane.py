@@ -60,7 +60,7 @@ def energy_density(l1, l2):
     return 0.5 * (l1 * l1 + l2 * l2 + (l1 * l2) ** -2 - 3.0)
 
 
-# The tether network (src/cell_physics.h tether_energy, Eq. 19): a bond of rest length l0 at
+# The tether network (src/physics/tether.h tether_energy, Eq. 19): a bond of rest length l0 at
 # stretch lam stores U = (G t0 l0^2 / sqrt3) u(lam), u = lam^2/2 - 3/4 + lam^-4/4, so that
 # dU/dl = (G t0 l0 / sqrt3)(lam - lam^-5). A triangulated net has 3 bonds per node and
 # sqrt3/2 l0^2 of area per node: W = 3 U / (sqrt3/2 l0^2) = 2 G t0 <u>. Affine deformation

@@ -112,7 +112,7 @@ def membrane_mesh_factor(level):
     return math.sqrt(0.5 * np.linalg.norm(a, axis=1).sum() / (4 * math.pi))
 
 
-# Classical buckling of a spherical shell, Eqs. S1, S2, S4, S5 of src/cell_physics.h (derived and
+# Classical buckling of a spherical shell, Eqs. S1, S2, S4, S5 of src/physics/shell.h (derived and
 # unit-tested there; these are the same formulas for the Python side): radius R, thickness t,
 # modulus E, Poisson ratio nu (the wall: E = 3G, nu = 1/2).
 
