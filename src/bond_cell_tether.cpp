@@ -12,6 +12,7 @@
 
 #include "bond_cell_tether.h"
 
+#include "cell_coeff.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
 
@@ -169,9 +170,8 @@ void BondCellTether::coeff(int narg, char **arg)
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
 
-  const double G_one = utils::numeric(FLERR, arg[1], false, lmp);
-  const double t0_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double gamma_one = utils::numeric(FLERR, arg[3], false, lmp);
+  const char *cmd = "bond_coeff cell/tether";
+  const CellMech::WallCoefficients wall = CellMech::wall_coefficients(lmp, cmd, arg + 1, true);
   double lamf_one = 0.0;
   if (narg == 6) {
     if (strcmp(arg[4], "lamf") != 0)
@@ -183,27 +183,10 @@ void BondCellTether::coeff(int narg, char **arg)
                  "when l/l0 > lamf), got {}",
                  lamf_one);
   }
-  if (G_one <= 0.0)
-    error->all(FLERR, "bond_coeff cell/tether: shear modulus G must be > 0, got {}", G_one);
-  if (t0_one <= 0.0)
-    error->all(FLERR, "bond_coeff cell/tether: wall thickness t0 must be > 0, got {}", t0_one);
-  if (gamma_one < 0.0)
-    error->all(FLERR, "bond_coeff cell/tether: damping gamma must be >= 0, got {}", gamma_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "shear modulus G", G_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "wall thickness t0", t0_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "damping gamma", gamma_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "critical stretch lamf", lamf_one);
-
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++) {
-    G[i] = G_one;
-    t0[i] = t0_one;
-    gamma[i] = gamma_one;
-    lamf[i] = lamf_one;
-    setflag[i] = 1;
-    count++;
-  }
-  if (count == 0) error->all(FLERR, "Incorrect args for bond coefficients");
+  CellMech::require_magnitude(lmp, cmd, "critical stretch lamf", lamf_one);
+  if (CellMech::set_types(ilo, ihi, setflag,
+                          {{G, wall.G}, {t0, wall.t0}, {gamma, wall.gamma}, {lamf, lamf_one}}) == 0)
+    error->all(FLERR, "Incorrect args for bond coefficients");
   // created now, so that its count (f_cell_broken) can be used in thermo and variables at once
   if (lamf_one > 0.0) add_break_fix();
 }
@@ -224,23 +207,9 @@ void BondCellTether::init_style()
 {
   CellMech::require_unit_consistency(lmp, "Bond style cell/tether");
   checked = 0;
-  int flag, cols;
-  iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
-  if (iref < 0 || flag != 1 || cols != 3)
-    error->all(FLERR,
-               "Bond style cell/tether requires the wall reference positions as a per-atom array: "
-               "'fix cell all property/atom rmass d_rho d_drho d2_{} 3 ghost yes' before "
-               "read_data, filled from the "
-               "data file (read_data ... fix ID NULL cell)",
-               CellMech::REF_FIELD);
-
-  bool damped = false;
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i] && gamma[i] > 0.0) damped = true;
-  if (damped && !comm->ghost_velocity)
-    error->all(FLERR,
-               "Bond style cell/tether with damping gamma > 0 requires 'comm_modify vel yes' "
-               "(ghost velocities)");
+  iref = CellMech::reference_positions(lmp, "Bond style cell/tether");
+  if (CellMech::any_positive(setflag, gamma, atom->nbondtypes))
+    CellMech::require_ghost_velocities(lmp, "Bond style cell/tether with damping gamma > 0");
 
   // longest rest length of the local bonds, for LAMMPS's bond-extent sanity check
   double lmax_local = 0.0;
@@ -256,17 +225,11 @@ void BondCellTether::init_style()
   // tethers that can break need the topology bookkeeping of fix CELL_TETHER_BREAK (made by
   // bond_coeff, or here for coefficients from a restart file, before the fixes are initialised)
   breaker = nullptr;
-  bool breakable = false;
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i] && lamf[i] > 0.0) breakable = true;
-  if (breakable) {
+  if (CellMech::any_positive(setflag, lamf, atom->nbondtypes)) {
     // a broken tether's nodes leave each other's 1-2 list and become an ordinary pair (or 1-3
-    // when the special list is rebuilt from the bonds): the same only with 1-3 and 1-4 weights 1
-    if (force->special_lj[2] != 1.0 || force->special_lj[3] != 1.0)
-      error->all(FLERR,
-                 "Bond style cell/tether with a critical stretch lamf requires 'special_bonds lj "
-                 "0 1 1' (got lj {} {} {}): broken tethers turn their nodes into a non-bonded pair",
-                 force->special_lj[1], force->special_lj[2], force->special_lj[3]);
+    // when the special list is rebuilt from the bonds)
+    CellMech::require_special_lj_011(lmp, "Bond style cell/tether with a critical stretch lamf",
+                                     "broken tethers turn their nodes into a non-bonded pair");
     breaker = FixCellTetherBreak::ensure(lmp);
   }
   check_timestep();
@@ -291,8 +254,7 @@ void BondCellTether::check_timestep()
   for (int i = 0; i < atom->nlocal; i++)
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
-      if (type > 0 && setflag[type])
-        mlocal = MIN(mlocal, CellMech::atom_mass(atom, i));
+      if (type > 0 && setflag[type]) mlocal = MIN(mlocal, CellMech::atom_mass(atom, i));
     }
   MPI_Allreduce(&mlocal, &mmin, 1, MPI_DOUBLE, MPI_MIN, world);
   if (kmax == 0.0 || !(mmin > 0.0) || mmin == HUGE_VAL) return;
@@ -347,13 +309,8 @@ double BondCellTether::single(int type, double rsq, int i, int j, double &fforce
   const double l0 = CellMech::rest_length(atom->darray[iref], i, j);
   const double lam = r / l0;
   fforce = -tether_tension(G[type], t0[type], l0, lam) / r;
-  if (gamma[type] > 0.0) {
-    double **x = atom->x;
-    double **v = atom->v;
-    double dot = 0.0;
-    for (int d = 0; d < 3; d++) dot += (x[i][d] - x[j][d]) * (v[i][d] - v[j][d]);
-    fforce += damping_fpair(gamma[type], dot, rsq);
-  }
+  if (gamma[type] > 0.0)
+    fforce += damping_fpair(gamma[type], CellMech::radial_rate(atom->x, atom->v, i, j), rsq);
   return tether_energy(G[type], t0[type], l0, lam);
 }
 

@@ -38,9 +38,9 @@ class BondCellTether : public Bond {
 
  protected:
   double *G, *t0, *gamma, *lamf;
-  int iref;         // index of the reference-position array d2_cellref in atom->darray
-  double lmax;      // largest rest length, for the bond-extent check of LAMMPS
-  int checked;      // reference positions checked for plausibility in this run
+  int iref;       // index of the reference-position array d2_cellref in atom->darray
+  double lmax;    // largest rest length, for the bond-extent check of LAMMPS
+  int checked;    // reference positions checked for plausibility in this run
   // the bookkeeping of failures (fix CELL_TETHER_BREAK) when some bond type has a critical
   // stretch lamf, else null
   class FixCellTetherBreak *breaker;

@@ -21,6 +21,7 @@
 #include "pair_cell_sph.h"
 
 #include "cell_checks.h"
+#include "cell_coeff.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
 #include "cell_sph_pairs.h"
@@ -300,26 +301,14 @@ void PairCellSPH::coeff(int narg, char **arg)
       error->all(FLERR,
                  "pair_coeff cell/sph: the equation of state belongs to one fluid type; use "
                  "'pair_coeff I I rho0 c P0 mu s' (and 'pair_coeff I J s' between fluid types)");
-    const double rho0_one = utils::numeric(FLERR, arg[2], false, lmp);
-    const double c_one = utils::numeric(FLERR, arg[3], false, lmp);
-    const double P0_one = utils::numeric(FLERR, arg[4], false, lmp);
-    const double mu_one = utils::numeric(FLERR, arg[5], false, lmp);
-    const double s_one = utils::numeric(FLERR, arg[6], false, lmp);
-    if (rho0_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: reference density rho0 must be > 0, got {}",
-                 rho0_one);
-    if (c_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: sound speed c must be > 0, got {}", c_one);
-    if (mu_one < 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: viscosity mu must be >= 0, got {}", mu_one);
-    if (s_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: smoothing length s must be > 0, got {}", s_one);
     const char *cmd = "pair_coeff cell/sph";
-    CellMech::require_magnitude(lmp, cmd, "reference density rho0", rho0_one);
-    CellMech::require_magnitude(lmp, cmd, "sound speed c", c_one);
-    CellMech::require_magnitude(lmp, cmd, "background pressure P0", P0_one);
-    CellMech::require_magnitude(lmp, cmd, "viscosity mu", mu_one);
-    CellMech::require_magnitude(lmp, cmd, "smoothing length s", s_one);
+    using CellMech::coefficient;
+    using CellMech::Sign;
+    const double rho0_one = coefficient(lmp, cmd, "reference density rho0", arg[2], Sign::POSITIVE);
+    const double c_one = coefficient(lmp, cmd, "sound speed c", arg[3], Sign::POSITIVE);
+    const double P0_one = coefficient(lmp, cmd, "background pressure P0", arg[4], Sign::ANY);
+    const double mu_one = coefficient(lmp, cmd, "viscosity mu", arg[5], Sign::NON_NEGATIVE);
+    const double s_one = coefficient(lmp, cmd, "smoothing length s", arg[6], Sign::POSITIVE);
     for (int i = ilo; i <= ihi; i++) {
       fluid[i] = 1;
       rho0[i] = rho0_one;
@@ -332,9 +321,8 @@ void PairCellSPH::coeff(int narg, char **arg)
       count++;
     }
   } else {
-    const double s_one = utils::numeric(FLERR, arg[2], false, lmp);
-    if (s_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: smoothing length s must be > 0, got {}", s_one);
+    const double s_one = CellMech::coefficient(lmp, "pair_coeff cell/sph", "smoothing length s",
+                                               arg[2], CellMech::Sign::POSITIVE);
     for (int i = ilo; i <= ihi; i++)
       for (int j = MAX(jlo, i); j <= jhi; j++) {
         if (i == j)
@@ -505,10 +493,7 @@ void PairCellSPH::write_restart(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++) {
     fwrite(&fluid[i], sizeof(int), 1, fp);
-    fwrite(&rho0[i], sizeof(double), 1, fp);
-    fwrite(&c[i], sizeof(double), 1, fp);
-    fwrite(&P0[i], sizeof(double), 1, fp);
-    fwrite(&mu[i], sizeof(double), 1, fp);
+    for (double *a : {rho0, c, P0, mu}) fwrite(&a[i], sizeof(double), 1, fp);
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       fwrite(&s[i][j], sizeof(double), 1, fp);
@@ -519,28 +504,18 @@ void PairCellSPH::write_restart(FILE *fp)
 void PairCellSPH::read_restart(FILE *fp)
 {
   allocate();
-  const int me = comm->me;
+  // one value, in the order write_restart wrote them: read by rank 0, sent to every rank
+  auto get = [&](auto &value) {
+    if (comm->me == 0) utils::sfread(FLERR, &value, sizeof(value), 1, fp, nullptr, error);
+    MPI_Bcast(&value, sizeof(value), MPI_BYTE, 0, world);
+  };
   for (int i = 1; i <= atom->ntypes; i++) {
-    if (me == 0) {
-      utils::sfread(FLERR, &fluid[i], sizeof(int), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &rho0[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &c[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &P0[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &mu[i], sizeof(double), 1, fp, nullptr, error);
-    }
-    MPI_Bcast(&fluid[i], 1, MPI_INT, 0, world);
-    MPI_Bcast(&rho0[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&c[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&P0[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&mu[i], 1, MPI_DOUBLE, 0, world);
+    get(fluid[i]);
+    for (double *a : {rho0, c, P0, mu}) get(a[i]);
     kappa[i] = tait_kappa(rho0[i], c[i]);
     for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) {
-        utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-        utils::sfread(FLERR, &s[i][j], sizeof(double), 1, fp, nullptr, error);
-      }
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      MPI_Bcast(&s[i][j], 1, MPI_DOUBLE, 0, world);
+      get(setflag[i][j]);
+      get(s[i][j]);
     }
   }
 }
