@@ -252,9 +252,9 @@ void PairCellSPH::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style cell/sph [search auto|branch|branchless]: the kind of the distance test of
-   find_pairs (auto, the default: the faster one, measured as the run goes). Every kind gives the
-   same bits, so the choice is for tests and timing.
+   pair_style cell/sph [search auto|branch|branchless]: the kind of the distance test of the pair
+   search (cell_sph_pairs.h; auto, the default: the faster one, measured as the run goes). Every
+   kind gives the same bits, so the choice is for tests and timing.
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::settings(int narg, char **arg)
