@@ -22,6 +22,7 @@
 #include "angle_cell_membrane.h"
 
 #include "cell_checks.h"
+#include "cell_coeff.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
 
@@ -79,7 +80,8 @@ void AngleCellMembrane::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   // a membrane wall may have no tethers to watch each step for a blow-up (bond style zero)
-  if (!force->bond_match("cell/tether")) CellMech::check_step_motion(lmp, "Angle style cell/membrane");
+  if (!force->bond_match("cell/tether"))
+    CellMech::check_step_motion(lmp, "Angle style cell/membrane");
 
   double **f = atom->f;
   int **anglelist = neighbor->anglelist;
@@ -235,8 +237,7 @@ void AngleCellMembrane::coeff(int narg, char **arg)
   static const char *usage = "expected 'angle_coeff N G t0 [gamma] [lamf value] [wrinkle yes|no]' "
                              "(shear modulus, wall thickness, edge damping, critical stretch, "
                              "tension-field theory)";
-  if (narg < 3)
-    error->all(FLERR, "Angle_coeff cell/membrane: {}, got {} arguments", usage, narg);
+  if (narg < 3) error->all(FLERR, "Angle_coeff cell/membrane: {}, got {} arguments", usage, narg);
   // the optional gamma is the one positional argument after t0 that is not a keyword
   int iarg = 3;
   const auto keyword = [&](int i) {
@@ -247,8 +248,10 @@ void AngleCellMembrane::coeff(int narg, char **arg)
   double lamf_one = 0.0, wrinkle_one = 0.0;
   for (; iarg < narg; iarg += 2) {
     if (!keyword(iarg))
-      error->all(FLERR, "Angle_coeff cell/membrane: unknown keyword '{}', expected 'lamf' or "
-                 "'wrinkle'", arg[iarg]);
+      error->all(FLERR,
+                 "Angle_coeff cell/membrane: unknown keyword '{}', expected 'lamf' or "
+                 "'wrinkle'",
+                 arg[iarg]);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Angle_coeff cell/membrane: keyword '{}' needs a value; {}", arg[iarg],
                  usage);
@@ -277,31 +280,16 @@ void AngleCellMembrane::coeff(int narg, char **arg)
 
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
-  const double G_one = utils::numeric(FLERR, arg[1], false, lmp);
-  const double t0_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double gamma_one = ngamma ? utils::numeric(FLERR, arg[3], false, lmp) : 0.0;
-  if (!(G_one > 0.0) || !std::isfinite(G_one))
-    error->all(FLERR, "Angle_coeff cell/membrane: shear modulus G must be > 0, got {}", arg[1]);
-  if (!(t0_one > 0.0) || !std::isfinite(t0_one))
-    error->all(FLERR, "Angle_coeff cell/membrane: wall thickness t0 must be > 0, got {}", arg[2]);
-  if (!(gamma_one >= 0.0) || !std::isfinite(gamma_one))
-    error->all(FLERR, "Angle_coeff cell/membrane: damping gamma must be >= 0, got {}", arg[3]);
-  CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "G", G_one);
-  CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "t0", t0_one);
-  CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "gamma", gamma_one);
-  CellMech::require_magnitude(lmp, "Angle_coeff cell/membrane", "lamf", lamf_one);
-
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++) {
-    G[i] = G_one;
-    t0[i] = t0_one;
-    gamma[i] = gamma_one;
-    lamf[i] = lamf_one;
-    wrinkle[i] = wrinkle_one;
-    setflag[i] = 1;
-    count++;
-  }
-  if (count == 0) error->all(FLERR, "Incorrect args for angle coefficients");
+  const char *cmd = "Angle_coeff cell/membrane";
+  const CellMech::WallCoefficients wall = CellMech::wall_coefficients(lmp, cmd, arg + 1, ngamma);
+  CellMech::require_magnitude(lmp, cmd, "critical stretch lamf", lamf_one);
+  if (CellMech::set_types(ilo, ihi, setflag,
+                          {{G, wall.G},
+                           {t0, wall.t0},
+                           {gamma, wall.gamma},
+                           {lamf, lamf_one},
+                           {wrinkle, wrinkle_one}}) == 0)
+    error->all(FLERR, "Incorrect args for angle coefficients");
   // created now, so that its count (f_cell_broken) can be used in thermo and variables at once
   if (lamf_one > 0.0) FixCellTetherBreak::ensure(lmp);
 }
@@ -311,21 +299,9 @@ void AngleCellMembrane::coeff(int narg, char **arg)
 void AngleCellMembrane::init_style()
 {
   CellMech::require_unit_consistency(lmp, "Angle style cell/membrane");
-  int flag, cols;
-  iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
-  if (iref < 0 || flag != 1 || cols != 3)
-    error->all(FLERR,
-               "Angle style cell/membrane requires the wall reference positions as a per-atom "
-               "array: 'fix cell all property/atom rmass d_rho d_drho d2_{} 3 ghost yes' before "
-               "read_data, filled from the data file (read_data ... fix ID NULL cell)",
-               CellMech::REF_FIELD);
-  bool damped = false;
-  for (int i = 1; i <= atom->nangletypes; i++)
-    if (setflag[i] && gamma[i] > 0.0) damped = true;
-  if (damped && !comm->ghost_velocity)
-    error->all(FLERR,
-               "Angle style cell/membrane with damping gamma > 0 requires 'comm_modify vel yes' "
-               "(ghost velocities)");
+  iref = CellMech::reference_positions(lmp, "Angle style cell/membrane");
+  if (CellMech::any_positive(setflag, gamma, atom->nangletypes))
+    CellMech::require_ghost_velocities(lmp, "Angle style cell/membrane with damping gamma > 0");
 
   // the membrane is the continuum form of the tether net (Eqs. M1-M2 against Eq. 19): with the
   // tethers on as well the wall is counted twice, and a cell holds a higher turgor at the same
@@ -347,18 +323,12 @@ void AngleCellMembrane::init_style()
   // triangles that can fail need the topology bookkeeping of fix CELL_TETHER_BREAK (made by
   // angle_coeff, or here for coefficients from a restart file, before the fixes are initialised)
   breaker = nullptr;
-  bool breakable = false;
-  for (int i = 1; i <= atom->nangletypes; i++)
-    if (setflag[i] && lamf[i] > 0.0) breakable = true;
-  if (breakable) {
+  if (CellMech::any_positive(setflag, lamf, atom->nangletypes)) {
     // the nodes of an edge whose triangles have all failed become a non-bonded pair, as those of
-    // a broken tether (bond style cell/tether): the same only with 1-3 and 1-4 weights 1
-    if (force->special_lj[2] != 1.0 || force->special_lj[3] != 1.0)
-      error->all(FLERR,
-                 "Angle style cell/membrane with a critical stretch lamf requires 'special_bonds "
-                 "lj 0 1 1' (got lj {} {} {}): an edge without triangles turns its nodes into a "
-                 "non-bonded pair",
-                 force->special_lj[1], force->special_lj[2], force->special_lj[3]);
+    // a broken tether (bond style cell/tether)
+    CellMech::require_special_lj_011(lmp, "Angle style cell/membrane with a critical stretch lamf",
+                                     "an edge without triangles turns its nodes into a non-bonded "
+                                     "pair");
     breaker = FixCellTetherBreak::ensure(lmp);
   }
 }

@@ -22,6 +22,7 @@
 #include "bond_cell_lamella.h"
 
 #include "cell_checks.h"
+#include "cell_coeff.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
 
@@ -286,29 +287,21 @@ void BondCellLamella::coeff(int narg, char **arg)
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
 
-  const double sigma_one = utils::numeric(FLERR, arg[1], false, lmp);
-  const double Gc_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double gamma_one = narg == 4 ? utils::numeric(FLERR, arg[3], false, lmp) : 0.0;
-  if (!(sigma_one > 0.0))
-    error->all(FLERR, "bond_coeff cell/lamella: strength sigma_c must be > 0, got {}", sigma_one);
-  if (!(Gc_one > 0.0))
-    error->all(FLERR, "bond_coeff cell/lamella: fracture energy Gc must be > 0, got {}", Gc_one);
-  if (!(gamma_one >= 0.0))
-    error->all(FLERR, "bond_coeff cell/lamella: damping gamma must be >= 0, got {}", gamma_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/lamella", "strength sigma_c", sigma_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/lamella", "fracture energy Gc", Gc_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/lamella", "damping gamma", gamma_one);
-
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++) {
-    sigma[i] = sigma_one;
-    Gc[i] = Gc_one;
-    gamma[i] = gamma_one;
-    dc[i] = cohesive_length(sigma_one, Gc_one);
-    setflag[i] = 1;
-    count++;
-  }
-  if (count == 0) error->all(FLERR, "Incorrect args for bond coefficients");
+  const char *cmd = "bond_coeff cell/lamella";
+  using CellMech::Sign;
+  const double sigma_one =
+      CellMech::coefficient(lmp, cmd, "strength sigma_c", arg[1], Sign::POSITIVE);
+  const double Gc_one =
+      CellMech::coefficient(lmp, cmd, "fracture energy Gc", arg[2], Sign::POSITIVE);
+  const double gamma_one = narg == 4
+      ? CellMech::coefficient(lmp, cmd, "damping gamma", arg[3], Sign::NON_NEGATIVE)
+      : 0.0;
+  if (CellMech::set_types(ilo, ihi, setflag,
+                          {{sigma, sigma_one},
+                           {Gc, Gc_one},
+                           {gamma, gamma_one},
+                           {dc, cohesive_length(sigma_one, Gc_one)}}) == 0)
+    error->all(FLERR, "Incorrect args for bond coefficients");
   // created now, so that f_cell_debonded can be used in thermo and variables at once; after
   // read_restart it picks up the per-pair table and the per-atom counts of the restart file
   add_break_fix();
@@ -351,21 +344,12 @@ void BondCellLamella::init_style()
                "d_drho d2_{} 3 d_{} ghost yes' before read_data",
                CellMech::REF_FIELD, CellMech::AREA_FIELD);
 
-  bool damped = false;
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i] && gamma[i] > 0.0) damped = true;
-  if (damped && !comm->ghost_velocity)
-    error->all(FLERR,
-               "Bond style cell/lamella with damping gamma > 0 requires 'comm_modify vel yes' "
-               "(ghost velocities)");
-
+  if (CellMech::any_positive(setflag, gamma, atom->nbondtypes))
+    CellMech::require_ghost_velocities(lmp, "Bond style cell/lamella with damping gamma > 0");
   // a debonded pair leaves the 1-2 list and becomes an ordinary contact pair (or a 1-3 pair when
-  // the special list is rebuilt from the bonds): the same only with 1-3 and 1-4 weights 1
-  if (force->special_lj[2] != 1.0 || force->special_lj[3] != 1.0)
-    error->all(FLERR,
-               "Bond style cell/lamella requires 'special_bonds lj 0 1 1' (got lj {} {} {}): "
-               "debonded nodes become a contact pair of the pair style",
-               force->special_lj[1], force->special_lj[2], force->special_lj[3]);
+  // the special list is rebuilt from the bonds)
+  CellMech::require_special_lj_011(lmp, "Bond style cell/lamella",
+                                   "debonded nodes become a contact pair of the pair style");
 
   // longest rest length of the local lamella bonds, for LAMMPS's bond-extent sanity check
   double lmax_local = 0.0;
@@ -373,7 +357,8 @@ void BondCellLamella::init_style()
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
       const int j = atom->map(atom->bond_atom[i][m]);
-      if (type > 0 && setflag[type] && j >= 0) lmax_local = MAX(lmax_local, CellMech::rest_length(atom->darray[iref], i, j));
+      if (type > 0 && setflag[type] && j >= 0)
+        lmax_local = MAX(lmax_local, CellMech::rest_length(atom->darray[iref], i, j));
     }
   MPI_Allreduce(&lmax_local, &lmax, 1, MPI_DOUBLE, MPI_MAX, world);
 
@@ -447,13 +432,8 @@ double BondCellLamella::single(int type, double rsq, int i, int j, double &fforc
   const double A = CellMech::lamella_area(atom->dvector[ialam], i, j);
   const double delta_c = cohesive_length(sigma[type], Gc[type]);
   fforce = -A * cohesive_traction(sigma[type], delta_c, delta) / r;
-  if (gamma[type] > 0.0) {
-    double **x = atom->x;
-    double **v = atom->v;
-    double dot = 0.0;
-    for (int d = 0; d < 3; d++) dot += (x[i][d] - x[j][d]) * (v[i][d] - v[j][d]);
-    fforce += damping_fpair(A * gamma[type], dot, rsq);
-  }
+  if (gamma[type] > 0.0)
+    fforce += damping_fpair(A * gamma[type], CellMech::radial_rate(atom->x, atom->v, i, j), rsq);
   return A * cohesive_energy(sigma[type], delta_c, delta);
 }
 

@@ -12,13 +12,14 @@
 
 #include "bond_cell_tether.h"
 
+#include "cell_coeff.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
 
 #include "atom.h"
 #include "cell_checks.h"
 #include "cell_restart.h"
-#include "cell_simd.h"
+#include "cell_tether_sweep.h"
 #include "cell_topology.h"
 #include "comm.h"
 #include "error.h"
@@ -42,13 +43,14 @@ using namespace CellPhysics;
 
 BondCellTether::BondCellTether(LAMMPS *_lmp) :
     Bond(_lmp), G(nullptr), t0(nullptr), gamma(nullptr), lamf(nullptr), iref(-1), lmax(0.0),
-    checked(0), breaker(nullptr)
+    checked(0), breaker(nullptr), tethers(new CellMech::TetherSweep(_lmp))
 {
   born_matrix_enable = 0;
 }
 
 BondCellTether::~BondCellTether()
 {
+  delete tethers;
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(G);
@@ -58,31 +60,10 @@ BondCellTether::~BondCellTether()
   }
 }
 
-/* ---------------------------------------------------------------------- */
-
 /* ----------------------------------------------------------------------
-   Stretch lam = l / l0 and force factor fbond (the force on atom 1 is fbond (x1 - x2)) of n
-   tethers from their squared lengths, r . v, rest lengths, tension factors (Eq. 19) and
-   damping coefficients: the tension of tether_tension_scaled and damping_fpair where the
-   coefficient is > 0. Compiled for the baseline and for AVX2 (cell_simd.h), with the bits of one
-   tether at a time.
+   The forces in the bond list's order, with each tether's stretch and force factor from the
+   sweep (cell_tether_sweep.h), so that every force adds up as before, bit for bit.
 ------------------------------------------------------------------------- */
-
-CELLMECH_SIMD_CLONES static void
-tether_sweep(int n, const double *__restrict rsq, const double *__restrict rdv,
-             const double *__restrict rest, const double *__restrict scale,
-             const double *__restrict damp, double *__restrict lam, double *__restrict fbond)
-{
-  for (int k = 0; k < n; k++) {
-    const double r = std::sqrt(rsq[k]);
-    const double l = r / rest[k];
-    const double fb = -tether_tension_scaled(scale[k], l) / r;
-    lam[k] = l;
-    fbond[k] = damp[k] > 0.0 ? fb + damping_fpair(damp[k], rdv[k], rsq[k]) : fb;
-  }
-}
-
-/* ---------------------------------------------------------------------- */
 
 void BondCellTether::compute(int eflag, int vflag)
 {
@@ -90,100 +71,67 @@ void BondCellTether::compute(int eflag, int vflag)
   // every cell run has tethers: the one place that sees each step of each of them
   CellMech::check_step_motion(lmp, "Bond style cell/tether");
 
-  double **x = atom->x;
-  double **v = atom->v;
+  const CellMech::TetherStep t = tethers->sweep({G, t0, gamma, iref});
   double **f = atom->f;
-  tagint *tag = atom->tag;
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   double ebond = 0.0;
-
-  // Each tether's rest length, tension factor and damping coefficient change only with the bond
-  // list (a build or a setup): computed then, they spare every step a square root and a
-  // division, which the divider of the CPU, the loop's bottleneck, would otherwise run for every
-  // tether.
-  if (CellMech::list_rebuilt(lmp, rest_build, rest.size(), nbondlist)) {
-    rest.assign(nbondlist, 1.0);
-    scale.assign(nbondlist, 0.0);
-    damp.assign(nbondlist, 0.0);
-    for (int n = 0; n < nbondlist; n++) {
-      const int i1 = bondlist[n][0];
-      const int i2 = bondlist[n][1];
-      const int type = bondlist[n][2];
-      if (type <= 0) continue;
-      const double l0 = CellMech::rest_length(atom->darray[iref], i1, i2);
-      if (!(l0 > 0.0))
-        error->one(FLERR,
-                   "Bond style cell/tether: tether {}-{} has zero rest length; are the "
-                   "d2_cellref reference positions set and communicated to ghosts (ghost yes)?{}",
-                   tag[i1], tag[i2], CellMech::RESTART_FIELDS_HINT);
-      rest[n] = l0;
-      scale[n] = tether_tension_scale(G[type], t0[type], l0);
-      damp[n] = gamma[type];
-    }
-  }
-
-  // Three passes: the separations (gathers), the stretch and force factor of every tether
-  // (tether_sweep, whose square roots and divisions run in SIMD lanes), then failure and the
-  // forces in the bond list's order, so that every force adds up as before, bit for bit.
-  if ((int) sweep.size() < SWEEP_FIELDS * nbondlist) sweep.resize(SWEEP_FIELDS * nbondlist);
-  double *const dx = sweep.data(), *const dy = dx + nbondlist, *const dz = dy + nbondlist;
-  double *const rsq = dz + nbondlist, *const rdv = rsq + nbondlist;
-  double *const lam = rdv + nbondlist, *const fbond = lam + nbondlist;
-  for (int n = 0; n < nbondlist; n++) {
-    const int i1 = bondlist[n][0];
-    const int i2 = bondlist[n][1];
-    dx[n] = x[i1][0] - x[i2][0];
-    dy[n] = x[i1][1] - x[i2][1];
-    dz[n] = x[i1][2] - x[i2][2];
-    rsq[n] = dx[n] * dx[n] + dy[n] * dy[n] + dz[n] * dz[n];
-    rdv[n] = dx[n] * (v[i1][0] - v[i2][0]) + dy[n] * (v[i1][1] - v[i2][1]) +
-        dz[n] * (v[i1][2] - v[i2][2]);
-  }
-  tether_sweep(nbondlist, rsq, rdv, rest.data(), scale.data(), damp.data(), lam, fbond);
-
   for (int n = 0; n < nbondlist; n++) {
     const int i1 = bondlist[n][0];
     const int i2 = bondlist[n][1];
     const int type = bondlist[n][2];
     if (type <= 0) continue;    // broken
-    if (!checked && (lam[n] > 5.0 || lam[n] < 0.2))
-      error->one(
-          FLERR,
-          "Bond style cell/tether: tether {}-{} is stretched {:.4g} times its rest length at "
-          "the start of a run; the reference positions d2_cellref are wrong for it (is the "
-          "fix property/atom defined with 'ghost yes'?){}",
-          tag[i1], tag[i2], lam[n], CellMech::RESTART_FIELDS_HINT);
-
-    // Failure is tension only: a compressed tether never breaks. The bond leaves the bond list
-    // and the bond arrays of the atom(s) storing it now; fix CELL_TETHER_BREAK takes the rest of
-    // the topology with it on every rank.
-    if (lamf[type] > 0.0 && lam[n] > lamf[type]) {
-      bondlist[n][2] = 0;
-      CellMech::remove_bond(atom, i1, tag[i2]);
-      if (!newton_bond && i2 < nlocal) CellMech::remove_bond(atom, i2, tag[i1]);
-      breaker->tether_broke(tag[i1], tag[i2]);
+    if (!checked && (t.lam[n] > 5.0 || t.lam[n] < 0.2)) wrong_reference(i1, i2, t.lam[n]);
+    if (lamf[type] > 0.0 && t.lam[n] > lamf[type]) {
+      break_tether(n);
       continue;
     }
-
-    const double fb = fbond[n];
-    if (eflag) ebond = tether_energy(G[type], t0[type], rest[n], lam[n]);
+    const double fb = t.fbond[n];
+    if (eflag) ebond = tether_energy(G[type], t0[type], t.rest[n], t.lam[n]);
     if (newton_bond || i1 < nlocal) {
-      f[i1][0] += dx[n] * fb;
-      f[i1][1] += dy[n] * fb;
-      f[i1][2] += dz[n] * fb;
+      f[i1][0] += t.dx[n] * fb;
+      f[i1][1] += t.dy[n] * fb;
+      f[i1][2] += t.dz[n] * fb;
     }
     if (newton_bond || i2 < nlocal) {
-      f[i2][0] -= dx[n] * fb;
-      f[i2][1] -= dy[n] * fb;
-      f[i2][2] -= dz[n] * fb;
+      f[i2][0] -= t.dx[n] * fb;
+      f[i2][1] -= t.dy[n] * fb;
+      f[i2][2] -= t.dz[n] * fb;
     }
-    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fb, dx[n], dy[n], dz[n]);
+    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fb, t.dx[n], t.dy[n], t.dz[n]);
   }
   checked = 1;
   if (breaker) breaker->computed();
+}
+
+// at the start of a run, a tether far from its rest length has wrong reference positions
+void BondCellTether::wrong_reference(int i1, int i2, double lam)
+{
+  error->one(FLERR,
+             "Bond style cell/tether: tether {}-{} is stretched {:.4g} times its rest length at "
+             "the start of a run; the reference positions d2_cellref are wrong for it (is the "
+             "fix property/atom defined with 'ghost yes'?){}",
+             atom->tag[i1], atom->tag[i2], lam, CellMech::RESTART_FIELDS_HINT);
+}
+
+/* ----------------------------------------------------------------------
+   Failure is tension only: a compressed tether never breaks. The bond leaves the bond list and
+   the bond arrays of the atom(s) storing it now; fix CELL_TETHER_BREAK takes the rest of the
+   topology with it on every rank.
+------------------------------------------------------------------------- */
+
+void BondCellTether::break_tether(int n)
+{
+  int **bondlist = neighbor->bondlist;
+  const int i1 = bondlist[n][0];
+  const int i2 = bondlist[n][1];
+  tagint *tag = atom->tag;
+  bondlist[n][2] = 0;
+  CellMech::remove_bond(atom, i1, tag[i2]);
+  if (!force->newton_bond && i2 < atom->nlocal) CellMech::remove_bond(atom, i2, tag[i1]);
+  breaker->tether_broke(tag[i1], tag[i2]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -223,9 +171,8 @@ void BondCellTether::coeff(int narg, char **arg)
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
 
-  const double G_one = utils::numeric(FLERR, arg[1], false, lmp);
-  const double t0_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double gamma_one = utils::numeric(FLERR, arg[3], false, lmp);
+  const char *cmd = "bond_coeff cell/tether";
+  const CellMech::WallCoefficients wall = CellMech::wall_coefficients(lmp, cmd, arg + 1, true);
   double lamf_one = 0.0;
   if (narg == 6) {
     if (strcmp(arg[4], "lamf") != 0)
@@ -237,27 +184,10 @@ void BondCellTether::coeff(int narg, char **arg)
                  "when l/l0 > lamf), got {}",
                  lamf_one);
   }
-  if (G_one <= 0.0)
-    error->all(FLERR, "bond_coeff cell/tether: shear modulus G must be > 0, got {}", G_one);
-  if (t0_one <= 0.0)
-    error->all(FLERR, "bond_coeff cell/tether: wall thickness t0 must be > 0, got {}", t0_one);
-  if (gamma_one < 0.0)
-    error->all(FLERR, "bond_coeff cell/tether: damping gamma must be >= 0, got {}", gamma_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "shear modulus G", G_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "wall thickness t0", t0_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "damping gamma", gamma_one);
-  CellMech::require_magnitude(lmp, "bond_coeff cell/tether", "critical stretch lamf", lamf_one);
-
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++) {
-    G[i] = G_one;
-    t0[i] = t0_one;
-    gamma[i] = gamma_one;
-    lamf[i] = lamf_one;
-    setflag[i] = 1;
-    count++;
-  }
-  if (count == 0) error->all(FLERR, "Incorrect args for bond coefficients");
+  CellMech::require_magnitude(lmp, cmd, "critical stretch lamf", lamf_one);
+  if (CellMech::set_types(ilo, ihi, setflag,
+                          {{G, wall.G}, {t0, wall.t0}, {gamma, wall.gamma}, {lamf, lamf_one}}) == 0)
+    error->all(FLERR, "Incorrect args for bond coefficients");
   // created now, so that its count (f_cell_broken) can be used in thermo and variables at once
   if (lamf_one > 0.0) add_break_fix();
 }
@@ -278,23 +208,9 @@ void BondCellTether::init_style()
 {
   CellMech::require_unit_consistency(lmp, "Bond style cell/tether");
   checked = 0;
-  int flag, cols;
-  iref = atom->find_custom(CellMech::REF_FIELD, flag, cols);
-  if (iref < 0 || flag != 1 || cols != 3)
-    error->all(FLERR,
-               "Bond style cell/tether requires the wall reference positions as a per-atom array: "
-               "'fix cell all property/atom rmass d_rho d_drho d2_{} 3 ghost yes' before "
-               "read_data, filled from the "
-               "data file (read_data ... fix ID NULL cell)",
-               CellMech::REF_FIELD);
-
-  bool damped = false;
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i] && gamma[i] > 0.0) damped = true;
-  if (damped && !comm->ghost_velocity)
-    error->all(FLERR,
-               "Bond style cell/tether with damping gamma > 0 requires 'comm_modify vel yes' "
-               "(ghost velocities)");
+  iref = CellMech::reference_positions(lmp, "Bond style cell/tether");
+  if (CellMech::any_positive(setflag, gamma, atom->nbondtypes))
+    CellMech::require_ghost_velocities(lmp, "Bond style cell/tether with damping gamma > 0");
 
   // longest rest length of the local bonds, for LAMMPS's bond-extent sanity check
   double lmax_local = 0.0;
@@ -310,17 +226,11 @@ void BondCellTether::init_style()
   // tethers that can break need the topology bookkeeping of fix CELL_TETHER_BREAK (made by
   // bond_coeff, or here for coefficients from a restart file, before the fixes are initialised)
   breaker = nullptr;
-  bool breakable = false;
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i] && lamf[i] > 0.0) breakable = true;
-  if (breakable) {
+  if (CellMech::any_positive(setflag, lamf, atom->nbondtypes)) {
     // a broken tether's nodes leave each other's 1-2 list and become an ordinary pair (or 1-3
-    // when the special list is rebuilt from the bonds): the same only with 1-3 and 1-4 weights 1
-    if (force->special_lj[2] != 1.0 || force->special_lj[3] != 1.0)
-      error->all(FLERR,
-                 "Bond style cell/tether with a critical stretch lamf requires 'special_bonds lj "
-                 "0 1 1' (got lj {} {} {}): broken tethers turn their nodes into a non-bonded pair",
-                 force->special_lj[1], force->special_lj[2], force->special_lj[3]);
+    // when the special list is rebuilt from the bonds)
+    CellMech::require_special_lj_011(lmp, "Bond style cell/tether with a critical stretch lamf",
+                                     "broken tethers turn their nodes into a non-bonded pair");
     breaker = FixCellTetherBreak::ensure(lmp);
   }
   check_timestep();
@@ -345,8 +255,7 @@ void BondCellTether::check_timestep()
   for (int i = 0; i < atom->nlocal; i++)
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
-      if (type > 0 && setflag[type])
-        mlocal = MIN(mlocal, CellMech::atom_mass(atom, i));
+      if (type > 0 && setflag[type]) mlocal = MIN(mlocal, CellMech::atom_mass(atom, i));
     }
   MPI_Allreduce(&mlocal, &mmin, 1, MPI_DOUBLE, MPI_MIN, world);
   if (kmax == 0.0 || !(mmin > 0.0) || mmin == HUGE_VAL) return;
@@ -401,13 +310,8 @@ double BondCellTether::single(int type, double rsq, int i, int j, double &fforce
   const double l0 = CellMech::rest_length(atom->darray[iref], i, j);
   const double lam = r / l0;
   fforce = -tether_tension(G[type], t0[type], l0, lam) / r;
-  if (gamma[type] > 0.0) {
-    double **x = atom->x;
-    double **v = atom->v;
-    double dot = 0.0;
-    for (int d = 0; d < 3; d++) dot += (x[i][d] - x[j][d]) * (v[i][d] - v[j][d]);
-    fforce += damping_fpair(gamma[type], dot, rsq);
-  }
+  if (gamma[type] > 0.0)
+    fforce += damping_fpair(gamma[type], CellMech::radial_rate(atom->x, atom->v, i, j), rsq);
   return tether_energy(G[type], t0[type], l0, lam);
 }
 

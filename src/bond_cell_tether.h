@@ -15,8 +15,9 @@ BondStyle(cell/tether,BondCellTether);
 
 #include "bond.h"
 
-#include <utility>
-#include <vector>
+namespace CellMech {
+class TetherSweep;
+}
 
 namespace LAMMPS_NS {
 
@@ -35,29 +36,23 @@ class BondCellTether : public Bond {
   double single(int, double, int, int, double &) override;
   void *extract(const char *, int &) override;
 
-  // rest length of the tether between atoms i and j (local or ghost): distance of their
-  // reference positions
-
  protected:
   double *G, *t0, *gamma, *lamf;
-  int iref;         // index of the reference-position array d2_cellref in atom->darray
-  double lmax;      // largest rest length, for the bond-extent check of LAMMPS
-  int checked;      // reference positions checked for plausibility in this run
+  int iref;       // index of the reference-position array d2_cellref in atom->darray
+  double lmax;    // largest rest length, for the bond-extent check of LAMMPS
+  int checked;    // reference positions checked for plausibility in this run
   // the bookkeeping of failures (fix CELL_TETHER_BREAK) when some bond type has a critical
   // stretch lamf, else null
   class FixCellTetherBreak *breaker;
-  // per entry of neighbor->bondlist since its last build: rest length, tether_tension_scale,
-  // damping coefficient; the timestep of that build
-  bigint rest_build = -1;
-  std::vector<double> rest, scale, damp;
-  // per entry, this step: separation (3), r^2, r . v, stretch, force factor (compute's passes)
-  static constexpr int SWEEP_FIELDS = 7;
-  std::vector<double> sweep;
+  // the stretch and force factor of every tether in one sweep (cell_tether_sweep.h)
+  CellMech::TetherSweep *tethers;
 
   void add_break_fix();
 
   void allocate();
   void check_timestep();
+  void wrong_reference(int i1, int i2, double lam);
+  void break_tether(int n);
 };
 
 }    // namespace LAMMPS_NS

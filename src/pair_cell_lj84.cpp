@@ -11,6 +11,7 @@
 #include "pair_cell_lj84.h"
 
 #include "cell_checks.h"
+#include "cell_coeff.h"
 #include "cell_compat.h"
 
 #include "atom.h"
@@ -152,20 +153,14 @@ void PairCellLJ84::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
-  const double f0_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double r0_one = utils::numeric(FLERR, arg[3], false, lmp);
-  const double gamma_one = (narg == 5) ? utils::numeric(FLERR, arg[4], false, lmp) : 0.0;
-  if (f0_one < 0.0)
-    error->all(FLERR, "pair_coeff {}: strength f0 must be >= 0, got {}", style_name, f0_one);
-  if (r0_one <= 0.0)
-    error->all(FLERR, "pair_coeff {}: contact distance r0 must be > 0, got {}", style_name, r0_one);
-  if (gamma_one < 0.0)
-    error->all(FLERR, "pair_coeff {}: contact damping gamma must be >= 0, got {}", style_name,
-               gamma_one);
-  const std::string command = std::string("pair_coeff ") + style_name;
-  CellMech::require_magnitude(lmp, command, "strength f0", f0_one);
-  CellMech::require_magnitude(lmp, command, "contact distance r0", r0_one);
-  CellMech::require_magnitude(lmp, command, "contact damping gamma", gamma_one);
+  const std::string cmd = std::string("pair_coeff ") + style_name;
+  using CellMech::Sign;
+  const double f0_one = CellMech::coefficient(lmp, cmd, "strength f0", arg[2], Sign::NON_NEGATIVE);
+  const double r0_one =
+      CellMech::coefficient(lmp, cmd, "contact distance r0", arg[3], Sign::POSITIVE);
+  const double gamma_one = (narg == 5)
+      ? CellMech::coefficient(lmp, cmd, "contact damping gamma", arg[4], Sign::NON_NEGATIVE)
+      : 0.0;
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
@@ -188,11 +183,9 @@ void PairCellLJ84::require_ghost_velocities()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j] && gamma[i][j] > 0.0) damped = true;
-  if (damped && !comm->ghost_velocity)
-    error->all(FLERR,
-               "Pair style {} with contact damping gamma > 0 requires 'comm_modify vel yes' "
-               "(ghost velocities)",
-               style_name);
+  if (damped)
+    CellMech::require_ghost_velocities(
+        lmp, fmt::format("Pair style {} with contact damping gamma > 0", style_name));
 }
 
 void PairCellLJ84::init_style()
@@ -276,13 +269,8 @@ double PairCellLJ84::single(int i, int j, int itype, int jtype, double rsq, doub
                             double factor_lj, double &fforce)
 {
   fforce = repulsion84_fpair(f0[itype][jtype], r0[itype][jtype], rsq);
-  if (gamma[itype][jtype] > 0.0) {
-    double **x = atom->x;
-    double **v = atom->v;
-    double dot = 0.0;
-    for (int d = 0; d < 3; d++) dot += (x[i][d] - x[j][d]) * (v[i][d] - v[j][d]);
-    fforce -= gamma[itype][jtype] * dot / rsq;
-  }
+  if (gamma[itype][jtype] > 0.0)
+    fforce -= gamma[itype][jtype] * CellMech::radial_rate(atom->x, atom->v, i, j) / rsq;
   fforce *= factor_lj;
   return factor_lj * repulsion84_energy(f0[itype][jtype], r0[itype][jtype], rsq);
 }

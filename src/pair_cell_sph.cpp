@@ -21,9 +21,10 @@
 #include "pair_cell_sph.h"
 
 #include "cell_checks.h"
+#include "cell_coeff.h"
 #include "cell_compat.h"
 #include "cell_fields.h"
-#include "cell_simd.h"
+#include "cell_sph_pairs.h"
 
 #include "atom.h"
 #include "cell_topology.h"
@@ -40,7 +41,6 @@
 #include "respa.h"
 #include "update.h"
 
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -54,10 +54,7 @@ using namespace CellPhysics;
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), kappa(nullptr),
     s(nullptr), sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr),
-    pairs_step(-1), pairs_build(-1), pairs_nall(-1), pair_first(nullptr), pair_j(nullptr),
-    pair_wr(nullptr), maxfirst(0), maxpair(0), cand_build(-1), cand_nall(-1), cand_first(nullptr),
-    cand_j(nullptr), maxcand_first(0), maxcand(0), s_uniform(false), sinv_uniform(0.0),
-    wrnorm_uniform(0.0)
+    pairs(new CellMech::SPHPairs(_lmp))
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -68,11 +65,7 @@ PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
 PairCellSPH::~PairCellSPH()
 {
   memory->destroy(quant);
-  memory->destroy(pair_first);
-  memory->destroy(pair_j);
-  memory->destroy(pair_wr);
-  memory->destroy(cand_first);
-  memory->destroy(cand_j);
+  delete pairs;
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -90,229 +83,6 @@ PairCellSPH::~PairCellSPH()
 
 /* ---------------------------------------------------------------------- */
 
-void PairCellSPH::find_candidates()
-{
-  const int *const type = atom->type;
-  // the protoplasm of one cell never meets another cell's (CellMech::same_cell), even across two
-  // glued walls within the kernel's support
-  const tagint *const molecule = atom->molecule;
-  const int inum = list->inum;
-  const int *const ilist = list->ilist;
-  const int *const numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-
-  if (inum + 1 > maxcand_first) {
-    maxcand_first = inum + 1;
-    memory->destroy(cand_first);
-    memory->create(cand_first, maxcand_first, "pair:cand_first");
-  }
-  int ncand = 0;
-  for (int ii = 0; ii < inum; ii++) {
-    cand_first[ii] = ncand;
-    const int i = ilist[ii];
-    if (!fluid[type[i]]) continue;
-    const int *const jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-    if (ncand + jnum > maxcand) {
-      maxcand = MAX(ncand + jnum, 2 * maxcand);
-      memory->grow(cand_j, maxcand, "pair:cand_j");
-    }
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      if (!fluid[type[j]]) continue;
-      if (!CellMech::same_cell(molecule, i, j)) continue;
-      cand_j[ncand++] = j;
-    }
-  }
-  cand_first[inum] = ncand;
-  // the most pairs find_pairs can keep
-  if (ncand > maxpair) {
-    maxpair = ncand;
-    memory->destroy(pair_j);
-    memory->destroy(pair_wr);
-    memory->create(pair_j, maxpair, "pair:pair_j");
-    memory->create(pair_wr, maxpair, "pair:pair_wr");
-  }
-  if (inum + 1 > maxfirst) {
-    maxfirst = inum + 1;
-    memory->destroy(pair_first);
-    memory->create(pair_first, maxfirst, "pair:pair_first");
-  }
-  cand_build = neighbor->ncalls;
-  cand_nall = atom->nlocal + atom->nghost;
-
-  // whether one smoothing length serves every fluid type pair (pair_coeff may change between runs,
-  // and a run's init always builds the neighbour lists anew, so this is the place to look)
-  s_uniform = true;
-  bool seen = false;
-  for (int it = 1; it <= atom->ntypes; it++)
-    for (int jt = it; jt <= atom->ntypes; jt++) {
-      if (!fluid[it] || !fluid[jt]) continue;
-      if (!seen) {
-        seen = true;
-        sinv_uniform = sinv[it][jt];
-        wrnorm_uniform = wrnorm[it][jt];
-      } else if (sinv[it][jt] != sinv_uniform)    // 1/s, and so norm/s, follows from s
-        s_uniform = false;
-    }
-}
-
-/* ----------------------------------------------------------------------
-   The kernel factor wr = (dW/dr) / r (kernel_wr) of n pairs of one type pair (1 / s and
-   kernel_wr_norm(s)), from r^2 in place. The compiler turns the kernel's two brackets
-   into a select and runs the loop in SIMD lanes, for the baseline and for AVX2 (cell_simd.h),
-   with the bits of one pair at a time.
-------------------------------------------------------------------------- */
-
-CELLMECH_SIMD_CLONES static void kernel_wr_sweep(double *__restrict w, int n, double inv_s,
-                                                 double wr_norm)
-{
-  for (int k = 0; k < n; k++) w[k] = kernel_wr(w[k], inv_s, wr_norm);
-}
-
-/* ----------------------------------------------------------------------
-   The candidates k0 .. kend-1 of a particle at (xi, yi, zi) that lie inside the support, appended
-   to the pair list from npair with their r^2; returns the new count. With BRANCHLESS every
-   candidate is stored and the count moves past it only if it is inside, without a branch.
-------------------------------------------------------------------------- */
-
-template <bool BRANCHLESS>
-static inline int keep_inside(const int *cand_j, int k0, int kend, const double *x, double xi,
-                              double yi, double zi, const int *type, const double *cutsqi,
-                              int *pair_j, double *pair_wr, int npair)
-{
-  for (int k = k0; k < kend; k++) {
-    const int j = cand_j[k];
-    const double delx = xi - x[3 * j];
-    const double dely = yi - x[3 * j + 1];
-    const double delz = zi - x[3 * j + 2];
-    const double rsq = delx * delx + dely * dely + delz * delz;
-    if constexpr (BRANCHLESS) {
-      pair_j[npair] = j;
-      pair_wr[npair] = rsq;
-      npair += (rsq < cutsqi[type[j]]);
-    } else {
-      if (rsq >= cutsqi[type[j]]) continue;
-      pair_j[npair] = j;
-      pair_wr[npair] = rsq;
-      npair++;
-    }
-  }
-  return npair;
-}
-
-/* ----------------------------------------------------------------------
-   The kind of distance test for this search. Which candidates lie inside the support: a branch
-   on it is nearly free where the CPU's predictor learns the pattern (the regular lists of a
-   lattice at rest) and mispredicted at every turn where it cannot (a moving fluid's lists, atoms
-   re-sorted: a tenth of the full cell's step); a test without a branch costs a little in the
-   first case and saves that in the second. With search auto the faster is measured, as FFTW's
-   planner measures its plans: at each setup and every SEARCH_REPLAN searches, one search
-   untimed, then SEARCH_PLAN - SEARCH_TIMED - 1 without a branch and SEARCH_TIMED with one (the
-   predictor learns over a few); search_took keeps the shortest time of each kind and, at the
-   plan's end, the faster kind, which serves until the next plan. Both kinds keep the same pairs
-   in the same order, so the choice changes no bit, only the time.
-------------------------------------------------------------------------- */
-
-int PairCellSPH::search_kind()
-{
-  if (search_choice != SEARCH_AUTO) return search_choice;
-  if (update->setupflag || ++search_count >= SEARCH_REPLAN) {
-    search_count = 0;
-    search_trials = SEARCH_PLAN;
-    search_time[SEARCH_BRANCH] = search_time[SEARCH_BRANCHLESS] = HUGE_VAL;
-  }
-  if (search_trials == 0 || search_trials == SEARCH_PLAN) return search_mode;
-  return search_trials > SEARCH_TIMED ? SEARCH_BRANCHLESS : SEARCH_BRANCH;
-}
-
-void PairCellSPH::search_took(int kind, double seconds)
-{
-  if (search_trials == 0) return;
-  if (search_trials < SEARCH_PLAN) search_time[kind] = MIN(search_time[kind], seconds);
-  if (--search_trials == 0)
-    search_mode = search_time[SEARCH_BRANCHLESS] < search_time[SEARCH_BRANCH] ? SEARCH_BRANCHLESS
-                                                                              : SEARCH_BRANCH;
-}
-
-/* ---------------------------------------------------------------------- */
-
-template <bool CONTINUITY> void PairCellSPH::find_pairs()
-{
-  // the candidates change only when the neighbour list does: atoms keep their indices between
-  // builds, and within a run every build counts up neighbor->ncalls. Every setup (of a run, a
-  // minimisation, a rerun frame) builds the lists anew and then sets that count back to 0, so a
-  // run after a run 0 would see the count it ended with although the atoms were re-sorted or
-  // moved in between (displace_atoms, read_dump, the sort of the setup): a setup always searches.
-  if (update->setupflag || neighbor->ncalls != cand_build ||
-      atom->nlocal + atom->nghost != cand_nall)
-    find_candidates();
-
-  // atom->x and atom->v are contiguous N x 3 blocks: one load per coordinate, not two
-  const double *const x = atom->x ? atom->x[0] : nullptr;
-  const double *const v = atom->v ? atom->v[0] : nullptr;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
-  double *const drho = atom->dvector[idrho];
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
-  const int inum = list->inum;
-  const int *const ilist = list->ilist;
-
-  const int kind = search_kind();
-  const auto start = std::chrono::steady_clock::now();
-  int npair = 0;
-  for (int ii = 0; ii < inum; ii++) {
-    pair_first[ii] = npair;
-    const int kend = cand_first[ii + 1];
-    if (cand_first[ii] == kend) continue;
-    const int i = ilist[ii];
-    const int itype = type[i];
-    const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
-    const double vxi = v[3 * i], vyi = v[3 * i + 1], vzi = v[3 * i + 2];
-    const double mi = rmass[i];
-    const double *const cutsqi = cutsq[itype];
-    const double *const sinvi = sinv[itype];
-    const double *const normi = wrnorm[itype];
-    // three sweeps over i's pairs, so that the square roots and divisions of the kernel, which
-    // the loop waits on, run side by side in SIMD lanes: the distance test writes the pairs inside
-    // the support with their r^2, the kernel sweep turns r^2 into wr in place, the continuity
-    // sweep adds the terms of Eq. 7.
-    const int first = npair;
-    if (kind == SEARCH_BRANCH)
-      npair = keep_inside<false>(cand_j, cand_first[ii], kend, x, xi, yi, zi, type, cutsqi, pair_j,
-                                 pair_wr, npair);
-    else
-      npair = keep_inside<true>(cand_j, cand_first[ii], kend, x, xi, yi, zi, type, cutsqi, pair_j,
-                                pair_wr, npair);
-    if (s_uniform)
-      kernel_wr_sweep(pair_wr + first, npair - first, sinv_uniform, wrnorm_uniform);
-    else
-      for (int k = first; k < npair; k++) {
-        const int jtype = type[pair_j[k]];
-        pair_wr[k] = kernel_wr(pair_wr[k], sinvi[jtype], normi[jtype]);
-      }
-    if (!CONTINUITY) continue;
-    // i's sum in a register: no neighbour is i itself, and starting from what earlier particles
-    // added keeps the order of additions, and so every bit, of adding to drho[i] pair by pair
-    double drhoi = drho[i];
-    for (int k = first; k < npair; k++) {
-      const int j = pair_j[k];
-      const double vdotw =
-          continuity_term(vxi - v[3 * j], vyi - v[3 * j + 1], vzi - v[3 * j + 2], xi - x[3 * j],
-                          yi - x[3 * j + 1], zi - x[3 * j + 2], pair_wr[k]);
-      drhoi += rmass[j] * vdotw;
-      if (newton_pair || j < nlocal) drho[j] += mi * vdotw;
-    }
-    drho[i] = drhoi;
-  }
-  pair_first[inum] = npair;
-  search_took(kind,
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-}
-
-/* ---------------------------------------------------------------------- */
-
 void PairCellSPH::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
@@ -320,43 +90,15 @@ void PairCellSPH::compute(int eflag, int vflag)
 
   // fix cell/fluid advanced density and mass in pre_force: refresh the ghosts
   comm->forward_comm(this);
-
-  double *rmass = atom->rmass;
-  int *type = atom->type;
-  double *rho = atom->dvector[irho];
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  const int newton_pair = force->newton_pair;
-
-  if (atom->nmax > nmax) {
-    nmax = atom->nmax;
-    memory->destroy(quant);
-    memory->create(quant, NQUANT * nmax, "pair:quant");
-  }
-
-  // quantities of one particle only: once per particle, not per pair, side by side for the
-  // pair loop's gathers: P / rho^2, m, rho, mu
-  for (int i = 0; i < nall; i++) {
-    const int t = type[i];
-    double *const q = quant + NQUANT * i;
-    if (fluid[t]) {
-      const double inv_rho = 1.0 / rho[i];
-      q[0] = pressure(t, rho[i]) * inv_rho * inv_rho;
-      q[1] = rmass[i];
-      q[2] = inv_rho;
-      q[3] = mu[t];
-      if (i < nlocal && eflag) {
-        const double ei = rmass[i] * tait_internal_energy(rho[i], rho0[t], c[t], P0[t]);
-        if (eflag_global) eng_vdwl += ei;
-        if (eflag_atom) eatom[i] += ei;
-      }
-    } else
-      q[0] = q[1] = q[2] = q[3] = 0.0;
-  }
-
+  fluid_quantities(eflag);
   // the pairs of fix cell/fluid's continuity pass at these positions, or a search of our own
-  if (!pairs_of_continuity()) find_pairs<false>();
+  pairs->find_for_forces(list, type_data());
 
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int *const pair_first = pairs->first();
+  const int *const pair_j = pairs->neighbour();
+  const double *const pair_wr = pairs->wr();
   const double *const x = atom->x ? atom->x[0] : nullptr;
   const double *const vf = atom->v ? atom->v[0] : nullptr;
   double *const ff = atom->f ? atom->f[0] : nullptr;
@@ -370,7 +112,7 @@ void PairCellSPH::compute(int eflag, int vflag)
     const double vxi = vf[3 * i], vyi = vf[3 * i + 1], vzi = vf[3 * i + 2];
     const double *const qi = quant + NQUANT * i;
     const double prho2i = qi[0], mi = qi[1], irhoi = qi[2], mui = qi[3];
-    // as drho[i] in find_pairs: the same additions in the same order, in registers
+    // as drho[i] in SPHPairs::find_pairs: the same additions in the same order, in registers
     double fxi = ff[3 * i], fyi = ff[3 * i + 1], fzi = ff[3 * i + 2];
     for (int k = pair_first[ii]; k < kend; k++) {
       const int j = pair_j[k];
@@ -411,6 +153,47 @@ void PairCellSPH::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
+   quantities of one particle only: once per particle, not per pair, side by side for the pair
+   loop's gathers: P / rho^2, m, 1 / rho, mu; and the internal energy of the local particles
+------------------------------------------------------------------------- */
+
+void PairCellSPH::fluid_quantities(int eflag)
+{
+  double *rmass = atom->rmass;
+  int *type = atom->type;
+  double *rho = atom->dvector[irho];
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(quant);
+    memory->create(quant, NQUANT * nmax, "pair:quant");
+  }
+  for (int i = 0; i < nall; i++) {
+    const int t = type[i];
+    double *const q = quant + NQUANT * i;
+    if (fluid[t]) {
+      const double inv_rho = 1.0 / rho[i];
+      q[0] = pressure(t, rho[i]) * inv_rho * inv_rho;
+      q[1] = rmass[i];
+      q[2] = inv_rho;
+      q[3] = mu[t];
+      if (i < nlocal && eflag) {
+        const double ei = rmass[i] * tait_internal_energy(rho[i], rho0[t], c[t], P0[t]);
+        if (eflag_global) eng_vdwl += ei;
+        if (eflag_atom) eatom[i] += ei;
+      }
+    } else
+      q[0] = q[1] = q[2] = q[3] = 0.0;
+  }
+}
+
+CellMech::SPHTypeData PairCellSPH::type_data() const
+{
+  return {fluid, cutsq, sinv, wrnorm};
+}
+
+/* ----------------------------------------------------------------------
    fix cell/fluid advances the density on respa's outermost level, with the continuity pass whose
    pairs these forces reuse. With respa's 'hybrid' keyword only Respa knows which sub-style is
    on which level; the level that computes now is the outermost iff it tallies global energies.
@@ -439,41 +222,11 @@ void PairCellSPH::check_respa_level()
 void PairCellSPH::continuity()
 {
   double *drho = atom->dvector[idrho];
-  const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
-  const int nall = nlocal + atom->nghost;
-  for (int i = 0; i < (newton_pair ? nall : nlocal); i++) drho[i] = 0.0;
-
-  // keep the interacting pairs for the force call that follows at the same positions
-  pairs_step = update->ntimestep;
-  pairs_build = neighbor->ncalls;
-  pairs_nall = nall;
-  find_pairs<true>();
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < (newton_pair ? nall : atom->nlocal); i++) drho[i] = 0.0;
+  pairs->find_with_continuity(list, type_data(), drho);
   if (newton_pair) comm->reverse_comm(this);
-}
-
-/* ----------------------------------------------------------------------
-   The coupling with fix cell/fluid. It calls continuity() in pre_force, after this step's
-   neighbour lists are built and before the forces, so that the density leapfrogs the velocity;
-   continuity() keeps the fluid pairs and kernel gradients it finds, and the force call that
-   follows at the same positions takes them instead of searching the neighbour list again.
-   True when they are this step's. They are used once: any later force call in the step (run 0
-   after moving atoms, a line search) searches again. The pairs are atom indices, valid only
-   while the atoms keep them: a neighbour-list build in between (a fix re-neighbouring in
-   pre_force after cell/fluid) would point them at other atoms, so that is an error.
-------------------------------------------------------------------------- */
-
-bool PairCellSPH::pairs_of_continuity()
-{
-  if (pairs_step != update->ntimestep) return false;
-  pairs_step = -1;
-  if (neighbor->ncalls != pairs_build || atom->nlocal + atom->nghost != pairs_nall)
-    error->one(FLERR,
-               "Pair style cell/sph: the neighbour lists were rebuilt between fix cell/fluid's "
-               "continuity pass (pre_force) and the pair forces of step {}; the fluid pairs kept "
-               "for the forces no longer match the atoms",
-               update->ntimestep);
-  return true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -501,9 +254,9 @@ void PairCellSPH::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style cell/sph [search auto|branch|branchless]: the kind of the distance test of
-   find_pairs (auto, the default: the faster one, measured as the run goes). Every kind gives the
-   same bits, so the choice is for tests and timing.
+   pair_style cell/sph [search auto|branch|branchless]: the kind of the distance test of the pair
+   search (cell_sph_pairs.h; auto, the default: the faster one, measured as the run goes). Every
+   kind gives the same bits, so the choice is for tests and timing.
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::settings(int narg, char **arg)
@@ -513,21 +266,17 @@ void PairCellSPH::settings(int narg, char **arg)
                "Illegal pair_style cell/sph command: expected no arguments or 'search KIND', got "
                "{} arguments",
                narg);
-  search_choice = SEARCH_AUTO;
+  pairs->set_search(CellMech::SPHPairs::AUTO);
   if (narg == 0) return;
   const std::string key = arg[0], kind = arg[1];
   if (key != "search")
     error->all(FLERR, "Illegal pair_style cell/sph command: expected keyword 'search', got '{}'",
                key);
-  if (kind == "auto")
-    search_choice = SEARCH_AUTO;
-  else if (kind == "branch")
-    search_choice = SEARCH_BRANCH;
-  else if (kind == "branchless")
-    search_choice = SEARCH_BRANCHLESS;
-  else
+  const int search = CellMech::SPHPairs::search_named(kind);
+  if (search < 0)
     error->all(FLERR, "pair_style cell/sph search: expected auto, branch or branchless, got '{}'",
                kind);
+  pairs->set_search(search);
 }
 
 /* ----------------------------------------------------------------------
@@ -554,26 +303,14 @@ void PairCellSPH::coeff(int narg, char **arg)
       error->all(FLERR,
                  "pair_coeff cell/sph: the equation of state belongs to one fluid type; use "
                  "'pair_coeff I I rho0 c P0 mu s' (and 'pair_coeff I J s' between fluid types)");
-    const double rho0_one = utils::numeric(FLERR, arg[2], false, lmp);
-    const double c_one = utils::numeric(FLERR, arg[3], false, lmp);
-    const double P0_one = utils::numeric(FLERR, arg[4], false, lmp);
-    const double mu_one = utils::numeric(FLERR, arg[5], false, lmp);
-    const double s_one = utils::numeric(FLERR, arg[6], false, lmp);
-    if (rho0_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: reference density rho0 must be > 0, got {}",
-                 rho0_one);
-    if (c_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: sound speed c must be > 0, got {}", c_one);
-    if (mu_one < 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: viscosity mu must be >= 0, got {}", mu_one);
-    if (s_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: smoothing length s must be > 0, got {}", s_one);
     const char *cmd = "pair_coeff cell/sph";
-    CellMech::require_magnitude(lmp, cmd, "reference density rho0", rho0_one);
-    CellMech::require_magnitude(lmp, cmd, "sound speed c", c_one);
-    CellMech::require_magnitude(lmp, cmd, "background pressure P0", P0_one);
-    CellMech::require_magnitude(lmp, cmd, "viscosity mu", mu_one);
-    CellMech::require_magnitude(lmp, cmd, "smoothing length s", s_one);
+    using CellMech::coefficient;
+    using CellMech::Sign;
+    const double rho0_one = coefficient(lmp, cmd, "reference density rho0", arg[2], Sign::POSITIVE);
+    const double c_one = coefficient(lmp, cmd, "sound speed c", arg[3], Sign::POSITIVE);
+    const double P0_one = coefficient(lmp, cmd, "background pressure P0", arg[4], Sign::ANY);
+    const double mu_one = coefficient(lmp, cmd, "viscosity mu", arg[5], Sign::NON_NEGATIVE);
+    const double s_one = coefficient(lmp, cmd, "smoothing length s", arg[6], Sign::POSITIVE);
     for (int i = ilo; i <= ihi; i++) {
       fluid[i] = 1;
       rho0[i] = rho0_one;
@@ -586,9 +323,8 @@ void PairCellSPH::coeff(int narg, char **arg)
       count++;
     }
   } else {
-    const double s_one = utils::numeric(FLERR, arg[2], false, lmp);
-    if (s_one <= 0.0)
-      error->all(FLERR, "pair_coeff cell/sph: smoothing length s must be > 0, got {}", s_one);
+    const double s_one = CellMech::coefficient(lmp, "pair_coeff cell/sph", "smoothing length s",
+                                               arg[2], CellMech::Sign::POSITIVE);
     for (int i = ilo; i <= ihi; i++)
       for (int j = MAX(jlo, i); j <= jhi; j++) {
         if (i == j)
@@ -759,10 +495,7 @@ void PairCellSPH::write_restart(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++) {
     fwrite(&fluid[i], sizeof(int), 1, fp);
-    fwrite(&rho0[i], sizeof(double), 1, fp);
-    fwrite(&c[i], sizeof(double), 1, fp);
-    fwrite(&P0[i], sizeof(double), 1, fp);
-    fwrite(&mu[i], sizeof(double), 1, fp);
+    for (double *a : {rho0, c, P0, mu}) fwrite(&a[i], sizeof(double), 1, fp);
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       fwrite(&s[i][j], sizeof(double), 1, fp);
@@ -773,28 +506,18 @@ void PairCellSPH::write_restart(FILE *fp)
 void PairCellSPH::read_restart(FILE *fp)
 {
   allocate();
-  const int me = comm->me;
+  // one value, in the order write_restart wrote them: read by rank 0, sent to every rank
+  auto get = [&](auto &value) {
+    if (comm->me == 0) utils::sfread(FLERR, &value, sizeof(value), 1, fp, nullptr, error);
+    MPI_Bcast(&value, sizeof(value), MPI_BYTE, 0, world);
+  };
   for (int i = 1; i <= atom->ntypes; i++) {
-    if (me == 0) {
-      utils::sfread(FLERR, &fluid[i], sizeof(int), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &rho0[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &c[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &P0[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &mu[i], sizeof(double), 1, fp, nullptr, error);
-    }
-    MPI_Bcast(&fluid[i], 1, MPI_INT, 0, world);
-    MPI_Bcast(&rho0[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&c[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&P0[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&mu[i], 1, MPI_DOUBLE, 0, world);
+    get(fluid[i]);
+    for (double *a : {rho0, c, P0, mu}) get(a[i]);
     kappa[i] = tait_kappa(rho0[i], c[i]);
     for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) {
-        utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-        utils::sfread(FLERR, &s[i][j], sizeof(double), 1, fp, nullptr, error);
-      }
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      MPI_Bcast(&s[i][j], 1, MPI_DOUBLE, 0, world);
+      get(setflag[i][j]);
+      get(s[i][j]);
     }
   }
 }
@@ -871,7 +594,5 @@ void PairCellSPH::unpack_reverse_comm(int n, int *list, double *buf)
 
 double PairCellSPH::memory_usage()
 {
-  return Pair::memory_usage() + (double) NQUANT * nmax * sizeof(double) +
-      (double) maxfirst * sizeof(int) + (double) maxpair * (sizeof(int) + sizeof(double)) +
-      (double) (maxcand_first + maxcand) * sizeof(int);
+  return Pair::memory_usage() + (double) NQUANT * nmax * sizeof(double) + pairs->memory_usage();
 }

@@ -18,6 +18,11 @@ PairStyle(cell/sph,PairCellSPH);
 #include "pair.h"
 #include "physics/tait.h"
 
+namespace CellMech {
+class SPHPairs;
+struct SPHTypeData;
+}    // namespace CellMech
+
 namespace LAMMPS_NS {
 
 class PairCellSPH : public Pair {
@@ -40,7 +45,7 @@ class PairCellSPH : public Pair {
   double memory_usage() override;
 
   // d_drho of local atoms from the current positions and velocities (Eq. 7). Called by fix
-  // cell/fluid in pre_force; keeps the fluid pairs it finds for compute() (pairs_of_continuity)
+  // cell/fluid in pre_force; keeps the fluid pairs it finds for compute() (cell_sph_pairs.h)
   void continuity();
 
   // equation of state of a fluid type; used by fix cell/fluid and compute cell/props too
@@ -74,44 +79,13 @@ class PairCellSPH : public Pair {
   // per local and ghost atom, once per step: P / rho^2, m, 1 / rho, mu
   static constexpr int NQUANT = 4;
   double *quant;
-  // the interacting fluid pairs of the neighbour list (within 2s, same cell) as a compact list:
-  // those of ilist[ii] are pair_j[k], pair_wr[k] (grad_i W = wr r_ij) for k in
-  // pair_first[ii] .. pair_first[ii + 1] - 1. Found by continuity() at this step's positions and
-  // reused by compute(): the step, and the neighbour-list build and atom count they were found with
-  bigint pairs_step, pairs_build;
-  int pairs_nall;
-  int *pair_first, *pair_j;
-  double *pair_wr;
-  int maxfirst, maxpair;
-  // the candidates: the fluid pairs of one cell in the neighbour list (any distance), those of
-  // ilist[ii] cand_j[k] for k in cand_first[ii] .. cand_first[ii + 1] - 1, found once per
-  // neighbour-list build (the build count and atom count they were found with; every setup)
-  bigint cand_build;
-  int cand_nall;
-  int *cand_first, *cand_j;
-  int maxcand_first, maxcand;
-  // one smoothing length for every pair of fluid types (the usual one fluid type): it and its
-  // 1 / s and kernel_wr_norm(s), for the kernel sweep of all of an atom's pairs at once
-  bool s_uniform;
-  double sinv_uniform, wrnorm_uniform;
-  // the distance test of find_pairs, with a branch or without (search_kind): the kind in use,
-  // the searches since it was chosen, the searches of the plan still to make, and the shortest
-  // time of each kind in the plan (s)
-  enum { SEARCH_BRANCH = 0, SEARCH_BRANCHLESS = 1, SEARCH_AUTO = 2 };
-  int search_choice = SEARCH_AUTO;    // pair_style search: auto (planned) or one kind
-  static constexpr int SEARCH_TIMED = 6, SEARCH_PLAN = 10, SEARCH_REPLAN = 1000;
-  int search_mode = SEARCH_BRANCHLESS, search_count = 0, search_trials = 0;
-  double search_time[2] = {0.0, 0.0};
+  // the interacting fluid pairs, found by continuity() at this step's positions and reused by
+  // compute() (cell_sph_pairs.h)
+  CellMech::SPHPairs *pairs;
 
   void allocate();
-  bool pairs_of_continuity();
-  void find_candidates();
-  int search_kind();
-  void search_took(int kind, double seconds);
-
-  // the one neighbour-list search both passes share: fills the pair list and, with CONTINUITY,
-  // adds each pair's continuity terms (Eq. 7) to d_drho
-  template <bool CONTINUITY> void find_pairs();
+  CellMech::SPHTypeData type_data() const;
+  void fluid_quantities(int eflag);
 };
 
 }    // namespace LAMMPS_NS
