@@ -8,13 +8,14 @@
 #include "cell_simd.h"
 
 #include "atom.h"
-#include "cell_physics.h"
 #include "cell_topology.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "physics/kernel.h"
+#include "physics/sph.h"
 #include "update.h"
 
 #include <chrono>

@@ -10,9 +10,10 @@
 #include "cell_simd.h"
 
 #include "atom.h"
-#include "cell_physics.h"
 #include "error.h"
 #include "neighbor.h"
+#include "physics/damping.h"
+#include "physics/tether.h"
 
 #include <cmath>
 
