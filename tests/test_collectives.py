@@ -20,6 +20,7 @@ import subprocess
 import numpy as np
 
 import lmptest as T
+from cellmech.cellgen.datafile import read_data
 from cellmech.launch import mpi_command
 
 G, T0 = 8.0e5, 0.126
@@ -101,14 +102,7 @@ def stat(log, key):
 def main():
     d = T.workdir("collectives")
     T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 0, cwd=d)
-    xyz = []
-    sec = None
-    for line in open(os.path.join(d, "cell.data")):
-        s = line.split("#")[0].strip()
-        if s in ("Atoms", "Bonds", "Angles", "Masses", "Velocities"):
-            sec = s
-        elif s and sec == "Atoms" and len(s.split()) >= 6:    # id mol type x y z
-            xyz.append([float(v) for v in s.split()[3:6]])
+    xyz = read_data(os.path.join(d, "cell.data")).array("Atoms")[:, 3:6]    # id mol type x y z
     np.savetxt(os.path.join(d, "centre.txt"), np.mean(xyz, axis=0))
     T.check("the collective counter is built (tests/unit/mpi_count.cpp)", os.path.exists(COUNTER),
             COUNTER)

@@ -16,6 +16,7 @@ import numpy as np
 import lmptest as T
 
 from cellmech import cellgen
+from cellmech.cellgen.datafile import read_data
 
 
 def main():
@@ -54,20 +55,10 @@ def main():
     R, rho0, M = 30.0, 1.0, 1.3e4
     T.cellgen("cell", "-o", "two.data", "--level", 3, "--nfluid", 500, "--centres",
               "0,0,0;80,0,0", "--rho0", rho0, "--wall-mass", M, cwd=d)
-    lines = open(f"{d}/two.data").read().split("\n")
-    sec = {name.split("#")[0].strip(): i for i, name in enumerate(lines)
-           if name.split("#")[0].strip() in ("Masses", "Atoms", "Bonds", "Angles", "cell")}
-
-    def block(name):
-        out, i = [], sec[name] + 2
-        while i < len(lines) and lines[i].strip():
-            out.append(lines[i].split())
-            i += 1
-        return out
-
-    masses = {int(t): float(m) for t, m in block("Masses")}
-    atoms = np.array(block("Atoms"), float)
-    percell = np.array(block("cell"), float)
+    data = read_data(f"{d}/two.data")
+    masses = {int(t): float(m) for t, m in data.rows("Masses")}
+    atoms = data.array("Atoms")
+    percell = data.array("cell")
     refs = percell[:, [0, 4, 5, 6]]
     nodes, tri, edges = cellgen.icosphere(3)
     _, vmesh = cellgen.mesh_area_volume(nodes * R, tri)
@@ -83,7 +74,7 @@ def main():
         mw, mf = masses[1] * len(wall), masses[2] * len(fluid)
         T.check(f"cell {mol}: wall mass = input", abs(mw / M - 1) < 1e-12, f"{mw:.6g}")
         # each fluid particle carries its lattice cell (spacing^3) at rho0; the spacing is in the title
-        spacing = float(lines[0].split("spacing ")[1].split(",")[0])
+        spacing = float(data.title.split("spacing ")[1].split(",")[0])
         T.check(f"cell {mol}: fluid mass = rho0 * N * spacing^3",
                 abs(mf / (rho0 * len(fluid) * spacing ** 3) - 1) < 1e-5, f"{mf:.6g}; mesh volume "
                 f"{rho0 * vmesh:.6g}")
@@ -91,8 +82,8 @@ def main():
     T.check("per-atom masses = type masses, fluid density rho0",
             np.array_equal(percell[:, 1], [masses[int(t)] for t in atoms[:, 2]])
             and np.all(percell[atoms[:, 2] == 2, 2] == rho0) and np.all(percell[:, 3] == 0))
-    T.check("bonds and angles of both cells", len(block("Bonds")) == 2 * len(edges)
-            and len(block("Angles")) == 2 * len(tri))
+    T.check("bonds and angles of both cells", len(data.rows("Bonds")) == 2 * len(edges)
+            and len(data.rows("Angles")) == 2 * len(tri))
     T.finish()
 
 

@@ -35,6 +35,7 @@ import re
 import numpy as np
 
 import lmptest as T
+from cellmech.cellgen.datafile import read_data
 
 G, T0 = 8.0e5, 0.126
 
@@ -62,21 +63,10 @@ timestep        0.0005
 
 def read_wall(path):
     """Reference positions (by atom ID), triangles and bonds of the data file."""
-    ref, tri, bonds, sec = {}, [], [], None
-    for line in open(path):
-        s = line.split("#")[0].strip()
-        if not s:
-            continue
-        if s in ("Atoms", "Bonds", "Angles", "Masses", "Velocities") or s.startswith("cell"):
-            sec = s.split()[0]
-            continue
-        w = s.split()
-        if sec == "cell" and len(w) >= 7:
-            ref[int(w[0])] = np.array([float(w[4]), float(w[5]), float(w[6])])
-        elif sec == "Angles":
-            tri.append((int(w[2]), int(w[3]), int(w[4])))
-        elif sec == "Bonds":
-            bonds.append(tuple(sorted((int(w[2]), int(w[3])))))
+    data = read_data(path)
+    ref = {int(w[0]): np.array([float(v) for v in w[4:7]]) for w in data.rows("cell")}
+    tri = [tuple(int(v) for v in w[2:5]) for w in data.rows("Angles")]
+    bonds = [tuple(sorted((int(w[2]), int(w[3])))) for w in data.rows("Bonds")]
     return ref, tri, bonds
 
 
@@ -96,16 +86,7 @@ def edges_of(t):
 
 
 def data_angles(path):
-    out, sec = [], None
-    for line in open(path):
-        s = line.split("#")[0].strip()
-        if s and s[0].isalpha():    # a section header
-            sec = s
-            continue
-        if sec == "Angles" and s and s[0].isdigit():
-            w = s.split()
-            out.append(tuple(sorted(map(int, w[2:5]))))
-    return out
+    return [tuple(sorted(map(int, w[2:5]))) for w in read_data(path).rows("Angles")]
 
 
 def threshold_case(d, name, ref, tri, sx, sy, sz, lamf):

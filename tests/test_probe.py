@@ -20,6 +20,7 @@ import re
 import subprocess
 
 import lmptest as T
+from cellmech.cellgen.datafile import read_data
 
 COARSE = dict(T.COARSE, dir=T.INPUTS, data="cell.data")
 CELL = """
@@ -88,8 +89,8 @@ def main():
     d = T.workdir("probe")
     T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", 3.2, cwd=d)
     # the first fluid particle (type 2) of the data file: "ID molecule type x y z ..."
-    lines = open(f"{d}/cell.data").read().split("Atoms")[1].split("\n\n")[1].splitlines()
-    COARSE["fluidatom"] = next(int(w[0]) for w in map(str.split, lines) if w[2] == "2")
+    COARSE["fluidatom"] = next(int(w[0]) for w in read_data(f"{d}/cell.data").rows("Atoms")
+                               if w[2] == "2")
     # the same input with the right coefficient runs: the cases fail for their one defect only
     ok = CELL.format(units="micro") + TYPO.replace("2 2 cell/virtual", "1 2 cell/virtual")
     rc, log = T.lmp(ok, cwd=d, variables=COARSE, check=False, log="log.ok")

@@ -23,6 +23,8 @@ from scipy.spatial import cKDTree
 
 import lmptest as T
 
+from cellmech.cellgen.datafile import read_data
+
 GAP, INSET, CUTOFF, MIN_ANGLE = 2.56, 3.2, 1.5 * 2.56, 30.0
 
 
@@ -30,26 +32,6 @@ def gen(d, name, *args):
     p = subprocess.run([sys.executable, T.CELLGEN, "tissue", "-o", f"{name}.data", *map(str, args)],
                        cwd=d, capture_output=True, text=True)
     return p.returncode, p.stdout + p.stderr
-
-
-def parse(path):
-    lines = open(path).read().split("\n")
-    head = {}
-    for ln in lines[1:30]:
-        w = ln.split()
-        if len(w) == 2 and w[1] in ("atoms", "bonds", "angles"):
-            head[w[1]] = int(w[0])
-    names = ("Masses", "Atoms", "Bonds", "Angles", "cell")
-    sec = {ln.split("#")[0].strip(): i for i, ln in enumerate(lines) if ln.split("#")[0].strip() in names}
-
-    def block(name):
-        out, i = [], sec[name] + 2
-        while i < len(lines) and lines[i].strip():
-            out.append([float(v) for v in lines[i].split()])
-            i += 1
-        return np.array(out)
-
-    return head, lines[sec["cell"]], {n: block(n) for n in names if n in sec}
 
 
 def seg_dist(p, a, b):
@@ -87,10 +69,12 @@ def check_tissue(d, name, args, neighbours=None, porosity=None, box_volume=None,
     if rc:
         return None
     st = json.load(open(f"{d}/{name}.json"))
-    head, cellhead, blk = parse(f"{d}/{name}.data")
-    atoms, cellsec = blk["Atoms"], blk["cell"]
-    bonds = blk.get("Bonds", np.zeros((0, 4))).astype(int)
-    angles = blk["Angles"].astype(int)
+    data = read_data(f"{d}/{name}.data")
+    head = {k: data.counts[k] for k in ("atoms", "bonds", "angles") if k in data.counts}
+    cellhead = data.comments["cell"]
+    atoms, cellsec = data.array("Atoms"), data.array("cell")
+    bonds = data.array("Bonds", width=4).astype(int)
+    angles = data.array("Angles").astype(int)
     T.check(f"{name}: counts match the header", head == {"atoms": len(atoms), "bonds": len(bonds),
             "angles": len(angles)} and len(cellsec) == len(atoms), f"{head}")
     T.check(f"{name}: cell section has 7 values per atom, d_alam last",

@@ -25,6 +25,7 @@ import os
 import numpy as np
 
 import lmptest as T
+from cellmech.cellgen.datafile import read_data
 
 COARSE = dict(T.COARSE)
 HEAD = T.TISSUE_HEAD + """unfix           osmosis
@@ -154,14 +155,7 @@ def item4(d, special):
 
 def centroids(data):
     """Centroid of each cell's wall nodes (type 1) in a data file, by molecule ID."""
-    lines = open(data).read().split("\n")
-    i = next(k for k, ln in enumerate(lines) if ln.startswith("Atoms"))
-    rows = []
-    for ln in lines[i + 2:]:
-        if not ln.strip():
-            break
-        rows.append([float(v) for v in ln.split()[:6]])
-    a = np.array(rows)
+    a = read_data(data).array("Atoms")[:, :6]
     wall = a[a[:, 2] == 1]
     return {int(m): wall[wall[:, 1] == m, 3:6].mean(0) for m in np.unique(wall[:, 1])}
 

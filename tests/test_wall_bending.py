@@ -35,6 +35,7 @@ import os
 import numpy as np
 
 import lmptest as T
+from cellmech.cellgen.datafile import read_data
 
 G, T0 = 8.0e5, 0.126
 D = G * T0 ** 3 / 3.0
@@ -246,20 +247,10 @@ def bad_input(d):
 
 def read_topology(path):
     """Reference positions by ID, and the triangles, tethers and hinges of a data file."""
-    ref, sec, out = {}, None, {"Angles": [], "Bonds": [], "Dihedrals": []}
-    for line in open(path):
-        s = line.split("#")[0].strip()
-        if not s:
-            continue
-        if s[0].isalpha():
-            sec = s.split()[0]
-            continue
-        w = s.split()
-        if sec == "cell" and len(w) >= 7:
-            ref[int(w[0])] = np.array([float(w[4]), float(w[5]), float(w[6])])
-        elif sec in out:
-            out[sec].append(tuple(int(v) for v in w[2:]))
-    return ref, out["Angles"], out["Bonds"], out["Dihedrals"]
+    data = read_data(path)
+    ref = {int(w[0]): np.array([float(v) for v in w[4:7]]) for w in data.rows("cell")}
+    return ref, *([tuple(int(v) for v in w[2:]) for w in data.rows(k)]
+                  for k in ("Angles", "Bonds", "Dihedrals"))
 
 
 def hinges_follow_failure(d):

@@ -29,6 +29,7 @@ import os
 import numpy as np
 
 import lmptest as T
+from cellmech.cellgen.datafile import read_data
 
 G, T0 = 8.0e5, 0.126
 
@@ -57,23 +58,10 @@ timestep        {dt}
 # the data file, independently of the style
 def wall_triangles(path):
     """(reference positions by atom id, triangles a-b-c) of a data file."""
-    text = open(path).read().split("\n")
-    ref, tri = {}, []
-    sec = None
-    for line in text:
-        s = line.split("#")[0].strip()
-        if not s:
-            continue
-        if s in ("Atoms", "Bonds", "Angles", "Masses", "Velocities") or s.startswith("cell"):
-            sec = s.split()[0]
-            continue
-        if sec == "cell" and len(s.split()) >= 7:
-            w = s.split()
-            ref[int(w[0])] = np.array([float(w[4]), float(w[5]), float(w[6])])  # id rmass rho drho ref
-        elif sec == "Angles":
-            w = s.split()
-            tri.append((int(w[2]), int(w[3]), int(w[4])))
-    return ref, tri
+    data = read_data(path)
+    ref = {int(w[0]): np.array([float(v) for v in w[4:7]])    # id rmass rho drho ref
+           for w in data.rows("cell")}
+    return ref, [tuple(int(v) for v in w[2:5]) for w in data.rows("Angles")]
 
 
 def reference_area(path):
@@ -259,8 +247,7 @@ write_restart   wrinkled.restart
     print(f"wrinkle yes, wall scaled by 0.95: energy {E95:g}, sum x.f {xf95:g}")
     T.check("a wall shrunk in every direction is slack: no energy, no virial",
             E95 == 0.0 and xf95 == 0.0, f"{E95:g} {xf95:g}")
-    text = open(os.path.join(d, "wrinkled.data")).read()
-    coeffs = text.split("Angle Coeffs")[1].split("\n\n")[1].strip()
+    coeffs = " ".join(read_data(os.path.join(d, "wrinkled.data")).rows("Angle Coeffs")[0])
     print(f"write_data Angle Coeffs: {coeffs}")
     T.check("write_data keeps wrinkle yes", coeffs.endswith("wrinkle yes"), coeffs)
     back = {}

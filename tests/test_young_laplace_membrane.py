@@ -24,6 +24,7 @@ import os
 import numpy as np
 
 import lmptest as T
+from cellmech.cellgen.datafile import read_data
 
 from cellmech.validation import references as ref  # Young-Laplace, shared with tools/validate.sh
 
@@ -71,21 +72,10 @@ print           "LAM2 $(v_lam:%.15g) $(ke:%.6g)"
 def wall_geometry(path):
     """Node positions by ID, the nodes' outward area vectors at rest, the volume and area, the
     node mass; from the data file."""
-    pos, tri, sec, mass = {}, [], None, None
-    for line in open(path):
-        s = line.split("#")[0].strip()
-        if not s:
-            continue
-        if s[0].isalpha():
-            sec = s.split()[0]
-            continue
-        w = s.split()
-        if sec == "Atoms":
-            pos[int(w[0])] = np.array([float(v) for v in w[3:6]])
-        elif sec == "cell" and mass is None:
-            mass = float(w[1])
-        elif sec == "Angles":
-            tri.append(tuple(int(v) for v in w[2:5]))
+    data = read_data(path)
+    pos = {int(w[0]): np.array([float(v) for v in w[3:6]]) for w in data.rows("Atoms")}
+    mass = float(data.rows("cell")[0][1])
+    tri = [tuple(int(v) for v in w[2:5]) for w in data.rows("Angles")]
     centre = np.mean(np.array(list(pos.values())), axis=0)
     share = {i: np.zeros(3) for i in pos}
     V0 = A0 = 0.0

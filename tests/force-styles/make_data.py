@@ -20,64 +20,57 @@ commands that in.cell runs after read_data: the harness's bond tests write their
 'nofix', and the round trip must restore them.
 The random numbers are seeded, so the file is reproducible.
 """
+import os
 import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from cellmech.cellgen.datafile import read_data, write  # noqa: E402
+
 BOX = ((-10.0, 21.0), (-13.5, 13.5), (-13.5, 13.5))
 SHIFT = -5.0    # along x: cell 1 (centre 0) straddles xlo = -10
+FIELDS = ["mass", "d_rho", "d_drho", "d2_cellref[1]", "d2_cellref[2]", "d2_cellref[3]", "d_alam"]
 
 
 def main(src, folder):
     rng = np.random.default_rng(20260704)
-    lines = open(src).read().split("\n")
-    out, section = ["# cellmech force-style tests (tests/force-styles/make_data.py) from:"], None
+    data = read_data(src)
     lo = np.array([b[0] for b in BOX])
     length = np.array([b[1] - b[0] for b in BOX])
-    velocities, fields = [], ["# SPDX-License-Identifier: GPL-2.0-or-later",
-                              "# per-atom fields of fix cell (tests/force-styles/make_data.py)"]
-    for line in lines:
-        words = line.split()
-        if line and not line[0].isspace() and words and words[0][0].isalpha():
-            section = words[0]
-            if section == "cell":
-                continue
-            if section == "Bonds" and velocities:
-                out += ["Velocities", ""] + velocities + [""]
-                # coefficients of in.cell's placeholder bond style, until the harness sets its own
-                out += ["Bond Coeffs # zero", "", "1", "2", ""]
-            out.append(line)
-            continue
-        if not words:
-            out.append(line)
-            continue
-        if section is None and len(words) == 4 and words[2].endswith("lo"):
-            axis = "xyz".index(words[2][0])
-            out.append(f"{BOX[axis][0]} {BOX[axis][1]} {words[2]} {words[3]}")
-        elif section == "Atoms":
-            x = np.array([float(w) for w in words[3:6]])
-            x[0] += SHIFT
-            x += rng.uniform(-0.3, 0.3, 3)
-            image = np.floor((x - lo) / length).astype(int)
-            x -= image * length
-            out.append(" ".join(words[:3] + [f"{v:.16g}" for v in x] + [str(i) for i in image]))
-            v = rng.uniform(-0.5, 0.5, 3)
-            velocities.append(" ".join([words[0]] + [f"{c:.16g}" for c in v]))
-        elif section == "cell":    # rmass d_rho d_drho d2_cellref[1-3] d_alam
-            vals = [float(w) for w in words[1:]]
-            if vals[1] > 0.0:    # fluid: density around rho0 = 1
-                vals[1] = 1.0 + rng.uniform(-0.03, 0.03)
-            else:
-                vals[6] += 0.5
-            vals[3] += SHIFT    # reference positions move with the cells, unwrapped
-            names = ["mass", "d_rho", "d_drho", "d2_cellref[1]", "d2_cellref[2]", "d2_cellref[3]",
-                     "d_alam"]
-            fields.append(f"set atom {words[0]} " +
-                          " ".join(f"{n} {v:.16g}" for n, v in zip(names, vals)))
+    data.title = "# cellmech force-style tests (tests/force-styles/make_data.py) from:\n" + data.title
+    data.box = [v for b in BOX for v in b]
+    atoms, velocities = [], []
+    for words in data.rows("Atoms"):
+        x = np.array([float(w) for w in words[3:6]])
+        x[0] += SHIFT
+        x += rng.uniform(-0.3, 0.3, 3)
+        image = np.floor((x - lo) / length).astype(int)
+        x -= image * length
+        atoms.append(words[:3] + [f"{v:.16g}" for v in x] + [str(i) for i in image])
+        v = rng.uniform(-0.5, 0.5, 3)
+        velocities.append([words[0]] + [f"{c:.16g}" for c in v])
+    fields = ["# SPDX-License-Identifier: GPL-2.0-or-later",
+              "# per-atom fields of fix cell (tests/force-styles/make_data.py)"]
+    for words in data.rows("cell"):    # rmass d_rho d_drho d2_cellref[1-3] d_alam
+        vals = [float(w) for w in words[1:]]
+        if vals[1] > 0.0:    # fluid: density around rho0 = 1
+            vals[1] = 1.0 + rng.uniform(-0.03, 0.03)
         else:
-            out.append(line)
-    with open(f"{folder}/data.cell", "w") as f:
-        f.write("\n".join(out).rstrip() + "\n")
+            vals[6] += 0.5
+        vals[3] += SHIFT    # reference positions move with the cells, unwrapped
+        fields.append(f"set atom {words[0]} " + " ".join(f"{n} {v:.16g}" for n, v in zip(FIELDS, vals)))
+    sections, comments = {}, {}
+    for name, rows in data.sections.items():
+        if name == "Bonds":
+            sections["Velocities"] = velocities
+            # coefficients of in.cell's placeholder bond style, until the harness sets its own
+            sections["Bond Coeffs"], comments["Bond Coeffs"] = [["1"], ["2"]], "zero"
+        if name != "cell":
+            sections[name] = atoms if name == "Atoms" else rows
+            comments[name] = data.comments[name]
+    data.sections, data.comments = sections, comments
+    write(f"{folder}/data.cell", data, box_format="{}")
     with open(f"{folder}/cell-fields.lmp", "w") as f:
         f.write("\n".join(fields) + "\n")
 

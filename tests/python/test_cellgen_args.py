@@ -16,6 +16,7 @@ import time
 
 import numpy as np
 import pytest
+from cellmech.cellgen.datafile import read_data
 
 CELLGEN = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
                        "tools", "cellgen.py")
@@ -97,9 +98,7 @@ def test_refused_in_one_line(tmp_path, args, want):
 
 def read_atoms(path):
     """(type, x, y, z) of every atom of a cellgen data file."""
-    text = open(path).read()
-    block = text.split("Atoms # molecular\n\n")[1].split("\n\n")[0]
-    a = np.loadtxt(block.splitlines(), ndmin=2)
+    a = read_data(path).array("Atoms")
     return a[:, 2].astype(int), a[:, 3:6]
 
 

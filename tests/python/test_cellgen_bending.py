@@ -6,24 +6,14 @@ import numpy as np
 import pytest
 
 from cellmech import cellgen
+from cellmech.cellgen.datafile import read_data
 
 
 def read(path):
     """Header counts and the Angles and Dihedrals sections of a cellgen data file."""
-    counts, sec, out = {}, None, {"Angles": [], "Dihedrals": [], "Bonds": []}
-    for line in open(path):
-        w = line.split("#")[0].split()
-        if not w:
-            continue
-        if len(w) == 2 and w[1] in ("atoms", "bonds", "angles", "dihedrals"):
-            counts[w[1]] = int(w[0])
-        elif len(w) == 3 and w[1:] == ["dihedral", "types"]:
-            counts["dihedral types"] = int(w[0])
-        elif w[0][0].isalpha():
-            sec = w[0]
-        elif sec in out:
-            out[sec].append(tuple(int(v) for v in w[2:]))
-    return counts, out
+    data = read_data(path)
+    return data.counts, {k: [tuple(int(v) for v in w[2:]) for w in data.rows(k)]
+                         for k in ("Angles", "Dihedrals", "Bonds")}
 
 
 def check_hinges(tris, dihedrals):

@@ -6,26 +6,16 @@ import numpy as np
 import pytest
 
 from cellmech import cellgen
+from cellmech.cellgen.datafile import read_data
 
 
 def read(path):
     """Positions and molecule/type per atom, triangles, and the per-atom masses (cell section)."""
-    atoms, tris, mass, sec = {}, [], {}, None
-    for line in open(path):
-        s = line.split("#")[0].strip()
-        if not s:
-            continue
-        if s[0].isalpha():
-            sec = s.split()[0]
-            continue
-        w = s.split()
-        if sec == "Atoms":
-            atoms[int(w[0])] = (int(w[1]), int(w[2]), np.array([float(v) for v in w[3:6]]))
-        elif sec == "Angles":
-            tris.append([int(v) for v in w[2:5]])
-        elif sec == "cell":
-            mass[int(w[0])] = float(w[1])
-    return atoms, np.array(tris), mass
+    data = read_data(path)
+    atoms = {int(w[0]): (int(w[1]), int(w[2]), np.array([float(v) for v in w[3:6]]))
+             for w in data.rows("Atoms")}
+    tris = np.array([[int(v) for v in w[2:5]] for w in data.rows("Angles")])
+    return atoms, tris, {int(w[0]): float(w[1]) for w in data.rows("cell")}
 
 
 @pytest.mark.parametrize("level", [2, 3])

@@ -5,6 +5,8 @@ import math
 
 import numpy as np
 
+from ..cellgen.datafile import read_data
+
 
 def crossing_period(t, r, r0, nper):
     """Period from the crossings of the rest radius r0 (both directions) over the first nper
@@ -66,19 +68,9 @@ def sheet_membrane_width(path, orient):
      * bonds along Y: the pulled and held edges are straight columns, the only nodes of their
        groups in in.sheet (column spacing a sqrt3/2 > 0.6 a), so the pull's work F (x_max - x_min)
        d lam is the energy's change A0 G t0 dw: W = A0 / (x_max - x_min), A0 the triangles' area."""
-    pos, tri, sec = {}, [], None
-    for line in open(path):
-        s = line.split("#")[0].strip()
-        if not s:
-            continue
-        if s[0].isalpha():
-            sec = s.split()[0]
-            continue
-        w = s.split()
-        if sec == "Atoms":
-            pos[int(w[0])] = np.array([float(w[3]), float(w[4])])
-        elif sec == "Angles":
-            tri.append(tuple(int(v) for v in w[2:5]))
+    data = read_data(path)
+    pos = {int(w[0]): np.array([float(w[3]), float(w[4])]) for w in data.rows("Atoms")}
+    tri = [tuple(int(v) for v in w[2:5]) for w in data.rows("Angles")]
     xy = np.array(list(pos.values()))
     if orient == "x":
         return float(np.ptp(xy[:, 1]))

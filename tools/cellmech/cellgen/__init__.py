@@ -43,7 +43,7 @@ import sys
 
 import numpy as np
 
-from . import params
+from .. import params
 
 # The most particles one data file may hold. cellgen keeps every particle in Python lists while it
 # writes the file (0.44 kB of memory each, measured at 3e5), so this bound keeps a run within about
