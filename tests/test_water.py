@@ -14,7 +14,7 @@ cells (cellgen.py tissue 1x1x2, level 3, 440 fluid particles each), short runs.
 4. Drying at a set flux q through the exposed wall only: each cell loses q dt times the sum of its
    exposed area over the steps (to round-off); with exchange yes and exposed unglued the glued face
    (as compute cell/props measures it) is not exposed, without exchange the whole wall is (the
-   default, exposed outside, in test_tissue_water_probe.py).
+   default, exposed outside, in test_tissue_water.py).
 5. Bad inputs end with a clear error naming the keyword.
 """
 import json
