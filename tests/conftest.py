@@ -3,7 +3,8 @@
 lmptest.py: the lmp runner with the plugin's environment, a run folder per module, and the checks.
 
 A check (lmptest.check) prints PASS or FAIL with its numbers and lets the test go on to its other
-checks; a test with a failed check fails when it ends (the hook below), naming the failed checks.
+checks; a test with a failed check fails when it ends (the hooks below), naming the failed checks,
+and a check failed in a fixture fails the setup of the test that first needs the fixture.
 Run one module by hand: PYTHONPATH=tools python3 -m pytest -q -p no:cacheprovider tests/test_X.py
 (LMP, CELLMECH_PLUGIN, ... as CTest sets them, see tests/CMakeLists.txt); the run folders
 (work-NAME) are made in the current directory.
@@ -13,14 +14,24 @@ import pytest
 import lmptest
 
 
-@pytest.hookimpl(hookwrapper=True)
-def pytest_runtest_call(item):
-    lmptest.failures.clear()
-    outcome = yield
+def _fail_on_checks(outcome):
     failed = list(lmptest.failures)
     lmptest.failures.clear()
     if outcome.excinfo is None and failed:
         raise AssertionError(f"{len(failed)} check(s) failed: {'; '.join(failed)}")
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_setup(item):
+    """A check failed in a fixture (a shared run) fails the setup of the test that needs it."""
+    lmptest.failures.clear()
+    _fail_on_checks((yield))
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_call(item):
+    lmptest.failures.clear()
+    _fail_on_checks((yield))
 
 
 @pytest.fixture(scope="session")

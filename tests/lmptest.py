@@ -170,14 +170,6 @@ def check(name, ok, detail=""):
         failures.append(name)
 
 
-def finish():
-    """The end of a test not run by pytest (none left once every module is converted)."""
-    if failures:
-        print(f"\n{len(failures)} check(s) failed: {', '.join(failures)}")
-        sys.exit(1)
-    print("\nall checks passed")
-
-
 def performance(logtext):
     m = re.findall(r"Performance: .*", logtext)
     return m[-1] if m else ""
