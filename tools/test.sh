@@ -3,6 +3,8 @@
 # Set up (or reuse) everything and run the whole test suite with CTest against the default LAMMPS
 # release (tools/setup.sh), then the unit tests and short cell runs against the other release the
 # package supports, built beside it (build-VERSION/). OTHER_LAMMPS=0 skips the second part.
+# Arguments go to the first ctest: -L fast (or unit, slow) runs one label of tests/CMakeLists.txt;
+# the second part runs the tests labelled compat.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$here/tools/setup.sh"
