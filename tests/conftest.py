@@ -51,3 +51,10 @@ def rundir(request):
     """The module's run folder, work-NAME in the current directory (test_NAME.py), shared by its
     tests: a run made by a module-scoped fixture is read there by every test that needs it."""
     return lmptest.workdir(request.module.__name__.removeprefix("test_"))
+
+
+@pytest.fixture(scope="module")
+def coarse_cell(rundir):
+    """The coarse test cell (lmptest.coarse_cell: cell.data) in the module's run folder."""
+    lmptest.coarse_cell(rundir)
+    return rundir

@@ -7,7 +7,6 @@ run. The continued run rebuilds its neighbour lists at the same step as the unin
 paper's tethers and with the membrane wall with bending (-var wall bending).
 """
 import numpy as np
-
 import pytest
 
 import lmptest as T

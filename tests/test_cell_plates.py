@@ -17,7 +17,6 @@ step: the inner steps would then see another plate than Verlet's steps). Asserte
    k_p times the overlaps at the outer step's positions (1e-9).
 """
 import numpy as np
-
 import pytest
 
 import lmptest as T

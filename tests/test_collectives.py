@@ -18,7 +18,6 @@ import re
 import subprocess
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -27,7 +27,6 @@ Asserted:
 """
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

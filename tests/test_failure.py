@@ -13,7 +13,6 @@ A coarse stiff cell is inflated to turgor and compressed (in.compress, lamf = 1.
 import re
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -25,8 +25,6 @@ import math
 
 import numpy as np
 
-import pytest
-
 import lmptest as T
 
 G, T0 = T.STIFF["G"], T.STIFF["t0"]
@@ -57,14 +55,8 @@ def summary(a, Gw, t0, R0=30.0):
     return P, lam, Feq, R, T_wall, lam_yl
 
 
-@pytest.fixture(scope="module")
-def cell(rundir):
-    T.coarse_cell(rundir)
-    return rundir
-
-
-def test_stiff_inflation(cell):
-    d = cell
+def test_stiff_inflation(coarse_cell):
+    d = coarse_cell
     a = inflate(d, "stiff", -364.0, 20000)
     P, lam, Feq, R, Tw, lam_yl = summary(a, G, T0)
     print(f"stiff: P {P:.2f} kPa (target 364), mean stretch {lam:.5f} (Young-Laplace {lam_yl:.5f}), "
@@ -78,8 +70,8 @@ def test_stiff_inflation(cell):
     T.check("stiff: equatorial force = 2 pi R T(lam) of the wall (5%)", abs(e) < 0.05, f"{e:+.2%}")
 
 
-def test_respa_inflation(cell):
-    d = cell
+def test_respa_inflation(coarse_cell):
+    d = coarse_cell
     a = inflate(d, "respa", -364.0, 20000, respa=True)
     P = a[-4:, 4].mean()
     print(f"respa (bonds 1 ns, SPH 2 ns): P {P:.2f} kPa after {a[-1, 1]:g} us")
@@ -89,10 +81,10 @@ def test_respa_inflation(cell):
     T.check("respa: no leaks", np.all(a[:, 10] == 0))
 
 
-def test_inflation_at_other_pressures(cell):
+def test_inflation_at_other_pressures(coarse_cell):
     """The inflations to 100, 200 and 400 kPa run (lmp fails the test otherwise); their
     F_eq / (P pi R^2) and stretch are printed, not asserted (see above)."""
-    d = cell
+    d = coarse_cell
     print(f"{'P target':>9s} {'P':>8s} {'lam':>8s} {'lam YL':>8s} {'F_eq':>10s} {'P pi R^2':>10s} ratio")
     for Pt in (100.0, 200.0, 400.0):
         a = inflate(d, f"yl{int(Pt)}", -Pt, 20000)

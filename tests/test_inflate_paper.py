@@ -14,7 +14,6 @@ Asserted, with the issue's and the paper's criteria:
 import math
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

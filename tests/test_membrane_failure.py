@@ -33,7 +33,6 @@ import os
 import re
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

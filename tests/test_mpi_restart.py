@@ -14,7 +14,6 @@ to round-off after 100 steps (1e-10 of the box size).
 import os
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

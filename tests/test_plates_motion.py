@@ -14,7 +14,6 @@
 About 25 s on one core.
 """
 import numpy as np
-
 import pytest
 
 import lmptest as T

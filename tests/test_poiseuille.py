@@ -49,7 +49,6 @@ Checks, each printed with its numbers:
 import math
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -27,7 +27,6 @@ plate 30 uN against the top one's 225 uN), KE/W 40-46%; slow, imbalance 0.41% at
 0.19% at most.
 """
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -38,7 +38,6 @@ The coarse stiff cell, inflated, is pressed by the top plate at 0.5 m/s for 12.8
    setup).
 """
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -21,7 +21,6 @@ import resource
 import subprocess
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -24,7 +24,6 @@ import json
 import os
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

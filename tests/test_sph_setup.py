@@ -38,8 +38,6 @@ NaN forces in 4).
 """
 import numpy as np
 
-import pytest
-
 import lmptest as T
 
 RHO0, C, P0, MU, S, DX = 1.0, 264.6, 100.0, 1.0, 1.2, 1.0
@@ -126,14 +124,8 @@ def test_rerun_frames(rundir):
         compare(f"rerun frame {k + 1}", frame, fresh(d, f"rr{k}.data", f"rr{k}-fresh.dump"))
 
 
-@pytest.fixture(scope="module")
-def cell(rundir):
-    T.coarse_cell(rundir)
-    return rundir
-
-
-def test_cell_between_runs(cell):
-    d = cell
+def test_cell_between_runs(coarse_cell):
+    d = coarse_cell
     # the whole cell: every style of the model between two runs
     for wall in ("tether", "membrane"):
         model = f"""
@@ -154,8 +146,8 @@ fix             osmosis fluid cell/fluid Pi 0 Lp 0
                 forces(f"{d}/{tag}.dump"), forces(f"{d}/{tag}-fresh.dump"))
 
 
-def test_distance_search_kinds_agree(cell):
-    d = cell
+def test_distance_search_kinds_agree(coarse_cell):
+    d = coarse_cell
     # the two kinds of distance test: the same pairs in the same order
     src = open(T.INPUTS + "/cell-model.lmp").read()
     key = "pair_style      hybrid/overlay cell/sph "

@@ -46,7 +46,6 @@ import os
 from types import SimpleNamespace
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -21,7 +21,6 @@ from types import SimpleNamespace
 
 import numpy as np
 from scipy.spatial import cKDTree
-
 import pytest
 
 import lmptest as T

@@ -32,7 +32,6 @@ import re
 import shutil
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -27,7 +27,6 @@ About 20 s on one core.
 import os
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

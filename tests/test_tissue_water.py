@@ -24,7 +24,6 @@ import os
 from types import SimpleNamespace
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

@@ -27,7 +27,6 @@ import math
 import os
 
 import numpy as np
-
 import pytest
 
 import lmptest as T

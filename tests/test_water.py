@@ -22,7 +22,6 @@ import os
 import struct
 
 import numpy as np
-
 import pytest
 
 import lmptest as T
