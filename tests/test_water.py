@@ -128,7 +128,6 @@ def test_exchange_balance(two):
     gap0, gap1 = r["S2"][0] - r["S1"][0], r["S2"][-1] - r["S1"][-1]
     T.check("exchange: the gap of the water potentials closes", abs(gap1) < 0.5 * abs(gap0),
             f"{gap0:.2f} -> {gap1:.2f} kPa")
-    return step, r
 
 
 def test_restart_across_ranks(two):
