@@ -68,7 +68,7 @@ variable        fmax equal c_fmax
 """
 
 
-def setup(data, G=G, t0=T0, cut=20.0, dt=0.001):
+def wall_input(data, G=G, t0=T0, cut=20.0, dt=0.001):
     # a tissue's data file also holds the lamella areas and needs room for more special neighbours
     tissue = data.startswith("tissue")
     return SETUP.format(data=data, G=G, t0=t0, cut=cut, dt=dt, alam=" d_alam" if tissue else "",
@@ -86,7 +86,7 @@ def test_walls_at_rest_store_no_energy(rundir):
               "--nfluid", 4, "--bending", cwd=d)
     for data, cut in (("cell3.data", 20.0), ("tissue.data", 40.0)):
         for lam in (1.0, 0.9):
-            inp = setup(data, cut=cut) + f"""
+            inp = wall_input(data, cut=cut) + f"""
 variable        sx atom {lam}*x
 variable        sy atom {lam}*y
 variable        sz atom {lam}*z
@@ -118,7 +118,7 @@ def test_cylinder_bending_energy(rundir):
             # bend the coordinate u (x or y) onto the cylinder of radius R about an axis through
             # the centre node, keeping arc lengths: u -> uc + R sin(s/R), z -> R (1 - cos(s/R))
             u = "x" if axis == "y" else "y"
-            inp = setup(data, cut=4.0 * a) + f"""
+            inp = wall_input(data, cut=4.0 * a) + f"""
 variable        uc equal {u}[{node}]
 variable        su atom v_uc+{R}*sin(({u}-v_uc)/{R})
 variable        sz atom {R}*(1-cos(({u}-v_uc)/{R}))
@@ -173,7 +173,7 @@ def test_nve_restart_and_ranks(cell2):
     # a stiff plate (t0 = 1 um) so that the hinges alone oscillate within the run
     drift, swing = {}, {}
     for dt, nsteps in ((0.004, 1000), (0.002, 2000)):
-        inp = setup("cell2.data", t0=1.0, dt=dt) + f"""
+        inp = wall_input("cell2.data", t0=1.0, dt=dt) + f"""
 displace_atoms  all random 0.3 0.3 0.3 8123 units box
 fix             nve all nve
 variable        etot equal ke+edihed
@@ -198,7 +198,7 @@ run             {nsteps}
     T.check("nve conserves the bent wall's energy", drift[0.004] < 1e-2, f"{drift[0.004]:.1e}")
     T.check("the energy error is second order in dt", 3.0 < ratio < 5.0, f"{ratio:.2f}")
 
-    run = setup("cell2.data", t0=1.0, dt=0.004) + """
+    run = wall_input("cell2.data", t0=1.0, dt=0.004) + """
 displace_atoms  all random 0.3 0.3 0.3 8123 units box
 fix             nve all nve
 run             300
@@ -234,7 +234,7 @@ write_dump      all custom restart.dump id x y z vx vy vz modify sort id format 
 
 def test_bad_input_refused(cell2):
     d = cell2
-    base = setup("cell2.data")
+    base = wall_input("cell2.data")
     # the first hinge i-j-k-l of the data file, its node i moved onto the middle of its edge j-k
     text = open(os.path.join(d, "cell2.data")).read().split("Dihedrals")[1].split("\n")
     i, j, k = [int(v) for v in next(l for l in text if l.strip()).split()[2:5]]
@@ -295,7 +295,7 @@ def hinged(rundir):
                            f"angle_coeff     1 {G} {T0} 0.0 {{lamf}}"),
               "tether": (f"bond_style      cell/tether\nbond_coeff      1 {G} {T0} 0.0 {{lamf}}\n"
                          f"angle_style     zero nocoeff\nangle_coeff     *")}
-    base = setup("{data}").replace("bond_style      zero\nbond_coeff      *\nangle_style     zero\n"
+    base = wall_input("{data}").replace("bond_style      zero\nbond_coeff      *\nangle_style     zero\n"
                                    "angle_coeff     *", "{styles}")
     deform = "".join(f"variable s{x} atom ({c})+{f}*({x}-({c}))\n"
                      for x, c, f in zip("xyz", centre, scale)) + "set group all x v_sx y v_sy z v_sz\n"
