@@ -37,7 +37,7 @@ import numpy as np
 import pytest
 
 import lmptest as T
-from cellmech.cellgen.datafile import read_data
+from cellmech.cellgen.datafile import read_data, write
 
 G, T0 = 8.0e5, 0.126
 D = G * T0 ** 3 / 3.0
@@ -236,8 +236,7 @@ def test_bad_input_refused(cell2):
     d = cell2
     base = wall_input("cell2.data")
     # the first hinge i-j-k-l of the data file, its node i moved onto the middle of its edge j-k
-    text = open(os.path.join(d, "cell2.data")).read().split("Dihedrals")[1].split("\n")
-    i, j, k = [int(v) for v in next(l for l in text if l.strip()).split()[2:5]]
+    i, j, k = [int(v) for v in read_data(os.path.join(d, "cell2.data")).rows("Dihedrals")[0][2:5]]
     collapse = (f"set atom {i} x $((x[{j}]+x[{k}])/2) y $((y[{j}]+y[{k}])/2) "
                 f"z $((z[{j}]+z[{k}])/2)\nrun 0\n")
     bad = {
@@ -310,13 +309,10 @@ def hinge_energies(d, hg, wall):
     keep = [h for h in hinges if key(*h[:3]) not in gone[wall] and key(*h[1:]) not in gone[wall]]
     # the energy of exactly the hinges that should be left, at the same positions: a data file
     # with only those, and no failure
-    text = open(os.path.join(d, "cellb.data")).read()
-    head, tail = text.split("Dihedrals\n\n")
-    head = head.replace(f"{len(hinges)} dihedrals", f"{len(keep)} dihedrals")
-    rest = tail.split("\n\n", 1)
-    body = "".join(f"{n + 1} 1 {' '.join(map(str, h))}\n" for n, h in enumerate(keep))
-    with open(os.path.join(d, "keep.data"), "w") as f:
-        f.write(head + "Dihedrals\n\n" + body + ("\n" + rest[1] if len(rest) > 1 else ""))
+    data = read_data(os.path.join(d, "cellb.data"))
+    data.counts["dihedrals"] = len(keep)
+    data.sections["Dihedrals"] = [[n + 1, 1, *h] for n, h in enumerate(keep)]
+    write(os.path.join(d, "keep.data"), data)
     _, log = T.lmp(base.format(data="keep.data", styles=styles[wall].format(lamf="")) + deform +
                    'run 0\nprint "EB $(edihed:%.17g) $(dihedrals)"\n', cwd=d, log=f"log.keep-{wall}")
     eb_expect = float(last(log, "EB")[1])
