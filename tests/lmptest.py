@@ -2,7 +2,9 @@
 """Helpers for the script tests: run lmp with the cellmech plugin, read its outputs.
 
 Environment (set by CTest, see tests/CMakeLists.txt): LMP, CELLMECH_PLUGIN, CELLMECH_ROOT, MPIEXEC,
-and PYTHONPATH=tools for the package cellmech (run by hand: PYTHONPATH=tools python3 tests/test_X.py).
+and PYTHONPATH=tools for the package cellmech (run by hand:
+PYTHONPATH=tools python3 -m pytest -q -p no:cacheprovider tests/test_X.py). tests/conftest.py makes
+these helpers pytest fixtures and fails a test whose checks (check below) failed.
 """
 import os
 import re
@@ -57,6 +59,11 @@ def inflate_coarse(cwd, nsteps, every=1000, jitter=0):
         restart_out=f"inflated{tag}.restart", jitter=jitter))
 
 
+def plugin_env():
+    """The environment lmp runs in: LAMMPS finds the plugin in its folder."""
+    return dict(os.environ, LAMMPS_PLUGIN_PATH=os.path.dirname(PLUGIN))
+
+
 def lmp(input_file, cwd, nprocs=1, variables=None, check=True, log="log.lammps"):
     """Run lmp on input_file (path, or text written to cwd/in.test); return (rc, log text)."""
     if "\n" in input_file:
@@ -68,12 +75,11 @@ def lmp(input_file, cwd, nprocs=1, variables=None, check=True, log="log.lammps")
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
     cmd = mpi_command(cmd, nprocs, MPIEXEC)
-    env = dict(os.environ, LAMMPS_PLUGIN_PATH=os.path.dirname(PLUGIN))
-    p = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True)
+    p = subprocess.run(cmd, cwd=cwd, env=plugin_env(), capture_output=True, text=True)
     text = open(os.path.join(cwd, log)).read() if os.path.exists(os.path.join(cwd, log)) else ""
     if check and p.returncode != 0:
         print(text[-3000:], p.stdout[-2000:], p.stderr[-2000:])
-        raise SystemExit(f"lmp failed (rc {p.returncode}): {' '.join(cmd)}")
+        raise AssertionError(f"lmp failed (rc {p.returncode}): {' '.join(cmd)}")
     return p.returncode, text
 
 
@@ -158,16 +164,10 @@ def load(path):
 
 
 def check(name, ok, detail=""):
+    """One check: prints PASS or FAIL; a test with a failed check fails at its end (conftest.py)."""
     print(f"{'PASS' if ok else 'FAIL'}  {name}  {detail}")
     if not ok:
         failures.append(name)
-
-
-def finish():
-    if failures:
-        print(f"\n{len(failures)} check(s) failed: {', '.join(failures)}")
-        sys.exit(1)
-    print("\nall checks passed")
 
 
 def performance(logtext):

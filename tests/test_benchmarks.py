@@ -33,7 +33,7 @@ def script(name, *args, env=None):
     return p.returncode, p.stdout
 
 
-def tissue():
+def test_tissue_benchmark_reports():
     rc, out = script("benchmark-tissue.sh", "-s", "2 3", "-n", 40, "-w", 20, "-t", 20, "-b", "0 1.1")
     print(out)
     T.check("benchmark-tissue.sh runs", rc == 0)
@@ -57,7 +57,7 @@ def tissue():
                 f"{rows[('notch', 2, 'off')]} -> {rows[('notch', 2, '1.1')]}")
 
 
-def cell():
+def test_cell_benchmark_reports():
     rc, out = script("benchmark.sh", "-r", 1, "-n", 20, env=dict(
         RESPA="0", TISSUE="0", WALLS="tether", NCOLL="40",
         CELLMECH_MPI_COUNT_LIB=os.environ.get("CELLMECH_MPI_COUNT_LIB", "")))
@@ -71,7 +71,7 @@ def cell():
             re.search(r"^  lamf 1\.5 \(can fail, nothing does\): \d+ calls", out, re.M) is not None)
 
 
-def rate_ensemble():
+def test_rate_ensemble_reports():
     d = T.workdir("rate-ensemble")
     rc, out = script("bench/rate-ensemble.sh", d, 2,
                      env=dict(RATES="0.5 0.25", STRAIN="0.08", INFLATE="2"))
@@ -90,13 +90,3 @@ def rate_ensemble():
     T.check("-var jitter -3 stops in.inflate with a message",
             "in.inflate: -var jitter -3: expected a whole number >= 0" in log)
 
-
-def main():
-    tissue()
-    cell()
-    rate_ensemble()
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

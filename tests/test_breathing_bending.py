@@ -27,6 +27,8 @@ settings and analysis in cellmech.validation.bending, shared with validation cas
 """
 import math
 
+import pytest
+
 import lmptest as T
 
 from cellmech.validation import analysis, bending as B
@@ -57,18 +59,23 @@ def buckle(d, level, lam, tag):
     return B.buckles(frames, dt, R, swing, 2 * math.pi / ref.omega_a5(G, t0, R, M))
 
 
-def main():
-    d = T.workdir("breathing-bending")
+@pytest.fixture(scope="module")
+def walls(rundir):
+    """The bending walls of levels 4 and 5 (cellgen --bending, wall mass by area)."""
     for level in (4, 5):
         T.cellgen("cell", "-o", f"wall{level}.data", "--level", level, "--radius", R, "--nfluid", 0,
-                  "--wall-mass", M, "--bending", "--wall-mass-by-area", cwd=d)
+                  "--wall-mass", M, "--bending", "--wall-mass-by-area", cwd=rundir)
     E = 3 * G
-    ec = ref.shell_critical_strain(T0, R)
-    print(f"stiff wall: sigma_c {ref.shell_critical_stress(E, T0, R) / 1e3:.4g} MPa, eps_c {ec:.4g}, "
-          f"lambda_c {ref.shell_buckle_wavelength(T0, R):.4g} um = "
+    print(f"stiff wall: sigma_c {ref.shell_critical_stress(E, T0, R) / 1e3:.4g} MPa, "
+          f"eps_c {ref.shell_critical_strain(T0, R):.4g}, lambda_c {ref.shell_buckle_wavelength(T0, R):.4g} um = "
           f"{ref.shell_buckle_wavelength(T0, R) / B.edge_length(4, R):.2f} edges at level 4")
+    return rundir
 
-    # 1. breathing below sigma_c, 20 periods
+
+def test_breathing_below_critical_stress(walls):
+    """Breathing below sigma_c, 20 periods: the bending wall keeps its mode, the tether wall crumples."""
+    d = walls
+    ec = ref.shell_critical_strain(T0, R)
     lam = 1 + B.BELOW * ec
     w5 = ref.omega_a5(G, T0, R, M)
     mesh = ref.membrane_mesh_factor(4)
@@ -98,7 +105,11 @@ def main():
     T.check("tether wall at the same amplitude crumples (rms of node radii > swing)",
             t["rms_max"] > t["swing_first"], f"{t['rms_max'] / t['swing_first']:.2f} of the swing")
 
-    # 2. buckling above sigma_c, thick wall, levels 4 and 5
+
+def test_buckling_above_critical_stress(walls):
+    """Buckling above sigma_c, thick wall, levels 4 and 5: the wavelength of the shell theory,
+    independent of the mesh; no buckling below."""
+    d = walls
     t0 = B.THICK * T0
     ec = ref.shell_critical_strain(t0, R)
     lc, lf = ref.shell_buckle_wavelength(t0, R), ref.shell_fastest_wavelength(t0, R, B.ABOVE)
@@ -128,8 +139,3 @@ def main():
     if l4 and l5:
         T.check("buckle wavelength does not depend on the mesh (levels 4 and 5 within 10%)",
                 abs(l5 / l4 - 1) < 0.10, f"{l4:.4g} vs {l5:.4g} um ({l5 / l4 - 1:+.2%})")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

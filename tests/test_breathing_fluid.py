@@ -30,8 +30,8 @@ def a4_roots(Et, R, n=3):
     return references.a4_roots(Et, R, M, RHO, C, n)
 
 
-def main():
-    d = T.workdir("breathing-fluid")
+def test_fluid_filled_breathing_mode(rundir):
+    d = rundir
     T.cellgen("cell", "-o", "cell.data", "--level", 4, "--nfluid", 3500, "--inset", 1.6, cwd=d)
     T.lmp(T.INPUTS + "/in.inflate", cwd=d, log="log.inflate", variables=dict(
         dir=T.INPUTS, data="cell.data", nsteps=20000, every=1000, restart_out="inflated.restart"))
@@ -53,8 +53,3 @@ def main():
         print(f"{i:4d} {w:9.3f} {plain[i]:9.3f} {w / plain[i] - 1:+7.2%} {pre[i]:9.3f} {w / pre[i] - 1:+7.2%}")
     T.check("ground breathing mode within 6% of Eq. A4", abs(modes[0] / plain[0] - 1) < 0.06,
             f"{modes[0] / plain[0] - 1:+.2%}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -17,6 +17,7 @@ step: the inner steps would then see another plate than Verlet's steps). Asserte
    k_p times the overlaps at the outer step's positions (1e-9).
 """
 import numpy as np
+import pytest
 
 import lmptest as T
 
@@ -47,11 +48,15 @@ fix             rec2 all ave/time 1 1 1 v_t v_Ftop v_Fbot c_pz v_KPbot file {tag
     return T.load(f"{d}/{tag}.dat")[:, 1:6]
 
 
-def main():
-    d = T.workdir("cell_plates")
-    T.cellgen("cell", "-o", "wall.data", "--level", 3, "--nfluid", 0, cwd=d)
+@pytest.fixture(scope="module")
+def wall(rundir):
+    T.cellgen("cell", "-o", "wall.data", "--level", 3, "--nfluid", 0, cwd=rundir)
+    return rundir
 
-    # Verlet, the moving top plate of in.plates: the same bits as fix wall/harmonic
+
+def test_verlet_plates_match_wall_harmonic(wall):
+    """Verlet, the moving top plate of in.plates: the same bits as fix wall/harmonic."""
+    d = wall
     moving = "run 1200"
     a = run(d, "verlet-wh", "wall/harmonic", moving)
     b = run(d, "verlet-cp", "cell/plates", moving)
@@ -59,7 +64,10 @@ def main():
     T.check("Verlet: cell/plates = fix wall/harmonic bit for bit (forces, momentum, every step)",
             a.shape == b.shape and np.array_equal(a, b))
 
-    # plates at rest, the wall thrown onto the bottom one
+
+def test_respa_plates_mean_over_inner_steps(wall):
+    """Plates at rest, the wall thrown onto the bottom one, under Verlet and respa."""
+    d = wall
     still = "variable ztop equal v_zt0\nvelocity wall set 0.0 0.0 -1.0\n"
     verlet = run(d, "still-verlet", "cell/plates", still + "run 1200")
     respa = "run_style respa 2 3 bond 1 angle 1 pair 1\nfix_modify plates respa 1\ntimestep 0.003\n"
@@ -93,8 +101,3 @@ def main():
     T.check("cell/plates on the outer level reports its one call per step: k_p times the overlaps "
             "at the outer step's positions", np.max(outer[:, 2]) > 0 and err_outer < 1e-9,
             f"{err_outer:.2e}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

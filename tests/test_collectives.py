@@ -18,6 +18,7 @@ import re
 import subprocess
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech.cellgen.datafile import read_data
@@ -99,67 +100,79 @@ def stat(log, key):
     return int(re.findall(rf"{key} = (\d+)", log)[-1])
 
 
-def main():
-    d = T.workdir("collectives")
+@pytest.fixture(scope="module")
+def wall_data(rundir):
+    """The coarse wall alone (cell.data) and its centre (centre.txt)."""
+    d = rundir
     T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 0, cwd=d)
     xyz = read_data(os.path.join(d, "cell.data")).array("Atoms")[:, 3:6]    # id mol type x y z
     np.savetxt(os.path.join(d, "centre.txt"), np.mean(xyz, axis=0))
+    return d
+
+
+def test_counter_built():
     T.check("the collective counter is built (tests/unit/mpi_count.cpp)", os.path.exists(COUNTER),
             COUNTER)
 
-    for wall in WALLS:
-        # the same output in both: the count is printed below, once
-        off_log, off = run(d, f"{wall}-off", wall, None, 2, show=False)
-        on_log, on = run(d, f"{wall}-intact", wall, 1.5, 2, show=False)
-        if off and on:
-            builds, outputs, runs = stat(on_log, "Neighbor list builds"), NSTEPS // THERMO + 1, 1
-            extra = on[0] - off[0]
-            allowed = builds + outputs + 2 * runs
-            print(f"{wall} wall, {NSTEPS} steps on 2 ranks, nothing fails: MPI_Allreduce calls "
-                  f"{off[0]} without failure, {on[0]} with lamf 1.5: {extra} more; allowed "
-                  f"{allowed} ({builds} builds + {outputs} outputs + 2 per run); the former "
-                  f"check made one per step ({NSTEPS})")
-            T.check(f"{wall} wall: no per-step reduction while nothing fails",
-                    0 <= extra <= allowed, f"{extra} of {allowed}")
-            T.check(f"{wall} wall: nothing broke at lamf 1.5",
-                    float(re.findall(r"BROKEN (\S+)", on_log)[-1]) == 0)
 
-        logs, dumps = {}, {}
-        for n in (1, 2):
-            logs[n], counts = run(d, f"{wall}-fail{n}", wall, 1.02, n)
-            dumps[n] = np.loadtxt(os.path.join(d, f"{wall}-fail{n}.dump"), skiprows=9)
-        h1, h2 = history(logs[1]), history(logs[2])
-        broken = float(h2[-1][1]) if h2 else 0
-        print(f"{wall} wall, lamf 1.02: broken at the end {broken:.0f}; builds "
-              f"{stat(logs[2], 'Neighbor list builds')}, dangerous "
-              f"{stat(logs[2], 'Dangerous builds')}; 2 ranks: {counts}")
-        T.check(f"{wall} wall, lamf 1.02: the wall fails", broken > 0, broken)
-        T.check(f"{wall} wall, lamf 1.02: 1 and 2 ranks, same counts at every output", h1 == h2)
-        # round-off only: the ghosts' forces are summed in another order on 2 ranks
-        dx = np.abs(dumps[1] - dumps[2]).max()
-        T.check(f"{wall} wall, lamf 1.02: 1 and 2 ranks, the same wall (1e-9 um)", dx < 1e-9,
-                f"{dx:.1e}")
-        T.check(f"{wall} wall, lamf 1.02: no dangerous builds",
-                stat(logs[1], "Dangerous builds") == 0 and stat(logs[2], "Dangerous builds") == 0)
-
-        # the fallback: no distance check in every step
-        _, off2 = run(d, f"{wall}-every2-off", wall, None, 2, every=2, show=False)
-        fb = {}
-        for n in (1, 2):
-            fb[n] = run(d, f"{wall}-every2-{n}", wall, 1.02, n, every=2, show=False)
-        fdump = [np.loadtxt(os.path.join(d, f"{wall}-every2-{n}.dump"), skiprows=9) for n in (1, 2)]
-        dx2 = np.abs(fdump[0] - fdump[1]).max()
-        T.check(f"{wall} wall, neigh_modify every 2: 1 and 2 ranks, same counts and wall (1e-9 um)",
-                history(fb[1][0]) == history(fb[2][0]) and dx2 < 1e-9, f"{dx2:.1e}")
-        T.check(f"{wall} wall, neigh_modify every 2: the wall fails",
-                float(re.findall(r"BROKEN (\S+)", fb[2][0])[-1]) > 0)
-        if fb[2][1] and off2:
-            print(f"{wall} wall, neigh_modify every 2: MPI_Allreduce calls {off2[0]} without "
-                  f"failure, {fb[2][1][0]} with lamf 1.02 (a gather after every force computation)")
-            T.check(f"{wall} wall, neigh_modify every 2: the fallback reduces in every step",
-                    fb[2][1][0] - off2[0] >= NSTEPS, f"{fb[2][1][0] - off2[0]}")
-    T.finish()
+@pytest.mark.parametrize("wall", WALLS)
+def test_no_per_step_reduction_while_intact(wall_data, wall):
+    d = wall_data
+    # the same output in both: the count is printed below, once
+    off_log, off = run(d, f"{wall}-off", wall, None, 2, show=False)
+    on_log, on = run(d, f"{wall}-intact", wall, 1.5, 2, show=False)
+    if off and on:
+        builds, outputs, runs = stat(on_log, "Neighbor list builds"), NSTEPS // THERMO + 1, 1
+        extra = on[0] - off[0]
+        allowed = builds + outputs + 2 * runs
+        print(f"{wall} wall, {NSTEPS} steps on 2 ranks, nothing fails: MPI_Allreduce calls "
+              f"{off[0]} without failure, {on[0]} with lamf 1.5: {extra} more; allowed "
+              f"{allowed} ({builds} builds + {outputs} outputs + 2 per run); the former "
+              f"check made one per step ({NSTEPS})")
+        T.check(f"{wall} wall: no per-step reduction while nothing fails",
+                0 <= extra <= allowed, f"{extra} of {allowed}")
+        T.check(f"{wall} wall: nothing broke at lamf 1.5",
+                float(re.findall(r"BROKEN (\S+)", on_log)[-1]) == 0)
 
 
-if __name__ == "__main__":
-    main()
+@pytest.mark.parametrize("wall", WALLS)
+def test_failure_rank_independent(wall_data, wall):
+    d = wall_data
+    logs, dumps = {}, {}
+    for n in (1, 2):
+        logs[n], counts = run(d, f"{wall}-fail{n}", wall, 1.02, n)
+        dumps[n] = np.loadtxt(os.path.join(d, f"{wall}-fail{n}.dump"), skiprows=9)
+    h1, h2 = history(logs[1]), history(logs[2])
+    broken = float(h2[-1][1]) if h2 else 0
+    print(f"{wall} wall, lamf 1.02: broken at the end {broken:.0f}; builds "
+          f"{stat(logs[2], 'Neighbor list builds')}, dangerous "
+          f"{stat(logs[2], 'Dangerous builds')}; 2 ranks: {counts}")
+    T.check(f"{wall} wall, lamf 1.02: the wall fails", broken > 0, broken)
+    T.check(f"{wall} wall, lamf 1.02: 1 and 2 ranks, same counts at every output", h1 == h2)
+    # round-off only: the ghosts' forces are summed in another order on 2 ranks
+    dx = np.abs(dumps[1] - dumps[2]).max()
+    T.check(f"{wall} wall, lamf 1.02: 1 and 2 ranks, the same wall (1e-9 um)", dx < 1e-9,
+            f"{dx:.1e}")
+    T.check(f"{wall} wall, lamf 1.02: no dangerous builds",
+            stat(logs[1], "Dangerous builds") == 0 and stat(logs[2], "Dangerous builds") == 0)
+
+
+@pytest.mark.parametrize("wall", WALLS)
+def test_fallback_without_distance_check(wall_data, wall):
+    d = wall_data
+    # the fallback: no distance check in every step
+    _, off2 = run(d, f"{wall}-every2-off", wall, None, 2, every=2, show=False)
+    fb = {}
+    for n in (1, 2):
+        fb[n] = run(d, f"{wall}-every2-{n}", wall, 1.02, n, every=2, show=False)
+    fdump = [np.loadtxt(os.path.join(d, f"{wall}-every2-{n}.dump"), skiprows=9) for n in (1, 2)]
+    dx2 = np.abs(fdump[0] - fdump[1]).max()
+    T.check(f"{wall} wall, neigh_modify every 2: 1 and 2 ranks, same counts and wall (1e-9 um)",
+            history(fb[1][0]) == history(fb[2][0]) and dx2 < 1e-9, f"{dx2:.1e}")
+    T.check(f"{wall} wall, neigh_modify every 2: the wall fails",
+            float(re.findall(r"BROKEN (\S+)", fb[2][0])[-1]) > 0)
+    if fb[2][1] and off2:
+        print(f"{wall} wall, neigh_modify every 2: MPI_Allreduce calls {off2[0]} without "
+              f"failure, {fb[2][1][0]} with lamf 1.02 (a gather after every force computation)")
+        T.check(f"{wall} wall, neigh_modify every 2: the fallback reduces in every step",
+                fb[2][1][0] - off2[0] >= NSTEPS, f"{fb[2][1][0] - off2[0]}")

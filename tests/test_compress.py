@@ -40,8 +40,8 @@ WINDOWS = (0.06, 0.10, 0.14, 0.18)
 HALF = 0.02     # half width of the strain windows
 
 
-def main():
-    d = T.workdir("compress")
+def test_quasistatic_compression_paper(rundir):
+    d = rundir
     L4 = T.params.LEVELS[4]     # the paper's resolution: cell-model.lmp's own lengths
     T.cellgen("cell", "-o", "cell.data", "--level", 4, "--nfluid", L4["nfluid"], "--inset", L4["r0"],
               cwd=d)
@@ -95,8 +95,3 @@ def main():
     print("rate difference per window: " + " ".join(f"{x:+.2%}" for x in diff))
     T.check("two quasistatic rates give the same curve within 2%", np.all(abs(diff) < 0.02),
             f"max {np.max(abs(diff)):.2%}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

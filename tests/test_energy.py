@@ -25,8 +25,8 @@ run             20000
 """
 
 
-def main():
-    d = T.workdir("energy")
+def test_inviscid_energy_conserved(rundir):
+    d = rundir
     T.coarse_cell(d)
     T.lmp(f"include {T.INPUTS}/in.inflate\n" + EXTRA, cwd=d, variables=dict(
         COARSE, dir=T.INPUTS, data="cell.data", nsteps=0, Lp=0.0, Pi=0.0, P0=100.0, mu=0.0,
@@ -38,8 +38,3 @@ def main():
           f"{e[-1]:.6g}; max deviation {dev:.2e}, secular drift {drift:.2e} (of max KE)")
     T.check("inviscid: energy deviation below 1e-3 of the kinetic energy", dev < 1e-3, f"{dev:.1e}")
     T.check("inviscid: no secular energy drift (2e-4)", drift < 2e-4, f"{drift:.1e}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -36,7 +36,7 @@ SHORT = {
     "in.turgor": ("cell3.data", dict(COARSE, restart="short.restart", turgor=30, nsettle=200,
                                      settled="turgor-short.restart", strain=0.005)),
     # the tissue inputs continue from the pair in.tissue-inflate writes; special (room for the
-    # lamella's special neighbours) is the generator's, filled in by main()
+    # lamella's special neighbours) is the generator's, filled in by the test
     "in.tissue-inflate": ("pair.data", dict(COARSE, nsteps=600, nsettle=200, every=200,
                                             restart_out="pair-short.restart")),
     "in.tissue-compress": ("pair.data", dict(COARSE, restart="pair-short.restart", vplate=4,
@@ -58,8 +58,8 @@ SHORT = {
 }
 
 
-def main():
-    d = T.workdir("examples")
+def test_every_example_runs(rundir):
+    d = rundir
     # in.relax and in.turgor cache their compressed/settled state: a state left by an earlier
     # run of this test would let the 1-rank run skip the stage it must test
     for cached in ("relax-short.restart", "turgor-short.restart"):
@@ -83,8 +83,3 @@ def main():
             ok = rc == 0 and "Total wall time" in log and "ERROR" not in log
             lost = re.search(r"Lost atoms", log)
             T.check(f"{ex} on {nprocs} rank(s)", ok and not lost, perf)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

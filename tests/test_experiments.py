@@ -27,6 +27,7 @@ Asserted:
 """
 
 import numpy as np
+import pytest
 
 import lmptest as T
 
@@ -39,12 +40,18 @@ def run(inp, d, log, **v):
     T.lmp(f"{T.INPUTS}/{inp}", cwd=d, log=log, variables=dict(COARSE, dir=T.INPUTS, **v))
 
 
-def main():
-    d = T.workdir("experiments")
+@pytest.fixture(scope="module")
+def inflated(rundir):
+    """The coarse cell (padded box) inflated (inflated.restart), from which every experiment starts."""
+    d = rundir
     T.coarse_cell(d, "cell.data", "--pad", 40)
     run("in.inflate", d, "log.inflate", data="cell.data", nsteps=20000, every=5000, out="inflate.dat",
         restart_out="inflated.restart")
+    return d
 
+
+def test_turgor_ordering(inflated):
+    d = inflated
     # ---- turgor ordering at small strain
     F3 = {}
     for P in (300, 30, 3):
@@ -62,6 +69,9 @@ def main():
     T.check("turgor: higher turgor carries more force at small strain (300 > 30 > 3 kPa)",
             F3[300] > F3[30] > F3[3], " ".join(f"{P}: {F3[P] / 1e3:.1f} uN" for P in (300, 30, 3)))
 
+
+def test_relaxation(inflated):
+    d = inflated
     # ---- relaxation: oscillation at 1 mPa s, overdamped at 1000 mPa s
     res = {}
     for mu in (1, 1000):
@@ -82,6 +92,9 @@ def main():
             and abs(res[1000]["centre"]) < 0.1 * res[1000]["d0"],
             f"tau_e {res[1000]['tau_e']:.2f} us, offset {res[1000]['centre'] / 1e3:.1f} uN")
 
+
+def test_impact(inflated):
+    d = inflated
     # ---- impact: shear stress ~ mu at low viscosity; transmitted force lags the quasistatic one
     tau = {}
     for mu in (1, 10):
@@ -101,6 +114,9 @@ def main():
     T.check("impact: the transmitted force lags the quasistatic one", lag > 0,
             f"reaches {level / 1e3:.0f} uN {100 * lag:+.2f}% strain later")
 
+
+def test_failure(inflated):
+    d = inflated
     # ---- failure
     run("in.failure", d, "log.failure-qs", restart="inflated.restart", strain=0.2, every=100,
         leakevery=500, bdump=0, imgevery=0, snapshot=0, out="failure-qs.dat")
@@ -123,8 +139,3 @@ def main():
     T.check("failure: under impact the crack starts on the side of the impacting plate",
             fi.get("lat_first_mean", -90) > 0, f"mean latitude of the first broken nodes "
             f"{fi.get('lat_first_mean', float('nan')):.0f} deg")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

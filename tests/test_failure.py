@@ -13,6 +13,7 @@ A coarse stiff cell is inflated to turgor and compressed (in.compress, lamf = 1.
 import re
 
 import numpy as np
+import pytest
 
 import lmptest as T
 
@@ -24,39 +25,64 @@ def first_failure(rows):
     return broken[0] if len(broken) else None
 
 
-def main():
-    d = T.workdir("failure")
-    T.coarse_cell(d)
-    model = dict(COARSE, dir=T.INPUTS)
-    T.lmp(f"{T.INPUTS}/in.inflate", cwd=d, variables=dict(model, data="cell.data", nsteps=25000,
-                                                           every=500, restart_out="turgid.restart"),
-          log="log.inflate")
+MODEL = dict(COARSE, dir=T.INPUTS)
 
-    firsts = {}
+
+@pytest.fixture(scope="module")
+def turgid(rundir):
+    """The coarse cell inflated to turgor (turgid.restart)."""
+    T.coarse_cell(rundir)
+    T.lmp(f"{T.INPUTS}/in.inflate", cwd=rundir, variables=dict(MODEL, data="cell.data", nsteps=25000,
+                                                                every=500, restart_out="turgid.restart"),
+          log="log.inflate")
+    return rundir
+
+
+@pytest.fixture(scope="module")
+def compressed(turgid):
+    """The turgid cell compressed to 20% (lamf 1.04) on 1 and 2 ranks: each record."""
+    d = turgid
+    rows = {}
     for n in (1, 2):
         T.lmp(f"{T.INPUTS}/in.compress", cwd=d, nprocs=n, log=f"log.compress{n}",
-              variables=dict(model, restart="turgid.restart", every=200, lamf=1.04, leaks="yes",
+              variables=dict(MODEL, restart="turgid.restart", every=200, lamf=1.04, leaks="yes",
                              strain=0.2, out=f"compress{n}.dat"))
-        rows = T.load(f"{d}/compress{n}.dat")    # step t eps Ftop Fbot Feq P broken leak
-        k = first_failure(rows)
-        T.check(f"{n} rank(s): tethers break by eps = 20%", k is not None)
-        if k is None:
-            continue
-        firsts[n] = rows[k, 0]
-        eps_f = rows[k, 2]
-        leak_before = rows[:k, 8].max() if k > 0 else 0
-        print(f"{n} rank(s): first broken tethers at step {rows[k, 0]:.0f}, eps = {eps_f:.4f} "
-              f"(paper, 2562 nodes: about 0.14); broken tethers at the end {rows[-1, 7]:.0f}, "
-              f"fluid outside {rows[-1, 8]:.0f} of 461")
-        T.check(f"{n} rank(s): no fluid outside the wall before failure", leak_before == 0,
-                f"{leak_before}")
-        T.check(f"{n} rank(s): fluid leaves after failure", rows[-1, 8] > 0, f"{rows[-1, 8]:.0f}")
-        T.check(f"{n} rank(s): failure strain 0.08 < eps_f < 0.20", 0.08 < eps_f < 0.20,
-                f"{eps_f:.4f}")
+        rows[n] = T.load(f"{d}/compress{n}.dat")    # step t eps Ftop Fbot Feq P broken leak
+    return rows
+
+
+@pytest.mark.parametrize("n", (1, 2))
+def test_tethers_break_under_compression(compressed, n):
+    rows = compressed[n]
+    k = first_failure(rows)
+    T.check(f"{n} rank(s): tethers break by eps = 20%", k is not None)
+    if k is None:
+        return
+    eps_f = rows[k, 2]
+    leak_before = rows[:k, 8].max() if k > 0 else 0
+    print(f"{n} rank(s): first broken tethers at step {rows[k, 0]:.0f}, eps = {eps_f:.4f} "
+          f"(paper, 2562 nodes: about 0.14); broken tethers at the end {rows[-1, 7]:.0f}, "
+          f"fluid outside {rows[-1, 8]:.0f} of 461")
+    T.check(f"{n} rank(s): no fluid outside the wall before failure", leak_before == 0,
+            f"{leak_before}")
+    T.check(f"{n} rank(s): fluid leaves after failure", rows[-1, 8] > 0, f"{rows[-1, 8]:.0f}")
+    T.check(f"{n} rank(s): failure strain 0.08 < eps_f < 0.20", 0.08 < eps_f < 0.20,
+            f"{eps_f:.4f}")
+
+
+def test_first_failure_rank_independent(compressed):
+    firsts = {n: rows[first_failure(rows), 0] for n, rows in compressed.items()
+              if first_failure(rows) is not None}
     if len(firsts) == 2:
         T.check("1 and 2 ranks: first failure at the same step", firsts[1] == firsts[2],
                 f"{firsts[1]:.0f} vs {firsts[2]:.0f}")
 
+
+@pytest.fixture(scope="module")
+def burst(turgid):
+    """A burst on 2 ranks, uninterrupted and continued from a restart written mid-burst: the two
+    logs."""
+    d = turgid
     # a burst without plates: lamf below the turgid cell's largest stretch (1.018) starts a crack
     burst = "variable        lamf index 1.016\n" + T.continue_cell("{restart}") + """
 fix             osmosis fluid cell/fluid Pi -364.0 Lp 1.0e-9
@@ -74,12 +100,17 @@ change_box      all boundary m m m
           "fix surf wall cell/vtk 200 walls\nrun 600\n" + dump.format("full.dump") +
           'print "BROKEN $(f_cell_broken) BONDS $(bonds) TETHERS $(c_props[1][13])"\n' +
           'print "ANGLES $(angles)"\n',
-          cwd=d, nprocs=2, variables=model, log="log.burst-full")
+          cwd=d, nprocs=2, variables=MODEL, log="log.burst-full")
     cont = burst.format(restart="burst.restart")
     _, log = T.lmp(cont + "run 600\n" + dump.format("cont.dump") +
                    'print "BROKEN $(f_cell_broken) BONDS $(bonds)"\n', cwd=d, nprocs=2,
-                   variables=model, log="log.burst-cont")
-    full_log = open(f"{d}/log.burst-full").read()
+                   variables=MODEL, log="log.burst-cont")
+    return open(f"{d}/log.burst-full").read(), log
+
+
+def test_restart_mid_burst(turgid, burst):
+    d = turgid
+    full_log, log = burst
     b_full = full_log.split("BROKEN ")[-1].split()[:3]
     b_cont = log.split("BROKEN ")[-1].split()[:3]
     print(f"burst: broken tethers / bonds left, uninterrupted {b_full[0]} / {b_full[2]}, "
@@ -94,6 +125,11 @@ change_box      all boundary m m m
     T.check("restart mid-burst continues the run (positions, 1e-10 um)", dx < 1e-10, f"{dx:.1e}")
     T.check("restart mid-burst keeps the per-atom broken counts", dn == 0)
 
+
+def test_crack_in_vtk(turgid, burst):
+    d = turgid
+    full_log, _ = burst
+    b_full = full_log.split("BROKEN ")[-1].split()[:3]
     # the crack as ParaView sees it (fix cell/vtk, read with the VTK library): the nodes' broken
     # tether counts add up to twice the broken tethers, and the torn triangles are gone
     import vtk
@@ -113,8 +149,3 @@ change_box      all boundary m m m
             node_counts.sum() == 2 * float(b_full[0]) == 2 * n_props)
     T.check("VTK triangles = angles left in the topology < 1280",
             poly.GetNumberOfPolys() == angles < 1280)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

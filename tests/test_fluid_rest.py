@@ -139,7 +139,7 @@ def pair_pressure_check(d, step, name):
     return a
 
 
-def periodic():
+def test_periodic_fluid_at_rest():
     d = T.workdir("fluid-rest")
     _, log = T.lmp(PERIODIC, cwd=d, nprocs=2)
     print(T.performance(log))
@@ -233,7 +233,7 @@ def read_traj(path):
     return frames
 
 
-def channel():
+def test_channel_fluid_at_rest():
     d = T.workdir("fluid-rest-walls")
     _, log = T.lmp(CHANNEL, cwd=d, nprocs=2)
     print(T.performance(log))
@@ -294,13 +294,3 @@ def channel():
     wall = a[:, 1] == 2
     T.check("walls: wall particles stay fixed with rho = rho0",
             np.all(a[wall, 4:7] == 0) and np.all(a[wall, 8] == RHO0), f"{wall.sum()} wall particles")
-
-
-def main():
-    periodic()
-    channel()
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -19,7 +19,7 @@ from cellmech import cellgen
 from cellmech.cellgen.datafile import read_data
 
 
-def main():
+def test_icosphere_levels():
     prev = None
     print(f"{'n':>2} {'nodes':>6} {'edges':>6} {'faces':>6} {'area err':>10} {'vol err':>10} ratio")
     for n in range(6):
@@ -50,8 +50,10 @@ def main():
                     prev[0] / ea > 3.5 and prev[1] / ev > 3.5)
         prev = (ea, ev)
 
-    # the data file of two cells
-    d = T.workdir("icosphere")
+
+def test_two_cell_data_file(rundir):
+    """The data file of two cells."""
+    d = rundir
     R, rho0, M = 30.0, 1.0, 1.3e4
     T.cellgen("cell", "-o", "two.data", "--level", 3, "--nfluid", 500, "--centres",
               "0,0,0;80,0,0", "--rho0", rho0, "--wall-mass", M, cwd=d)
@@ -84,8 +86,3 @@ def main():
             and np.all(percell[atoms[:, 2] == 2, 2] == rho0) and np.all(percell[:, 3] == 0))
     T.check("bonds and angles of both cells", len(data.rows("Bonds")) == 2 * len(edges)
             and len(data.rows("Angles")) == 2 * len(tri))
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

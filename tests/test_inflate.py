@@ -55,10 +55,8 @@ def summary(a, Gw, t0, R0=30.0):
     return P, lam, Feq, R, T_wall, lam_yl
 
 
-def main():
-    d = T.workdir("inflate")
-    T.coarse_cell(d)
-
+def test_stiff_inflation(coarse_cell):
+    d = coarse_cell
     a = inflate(d, "stiff", -364.0, 20000)
     P, lam, Feq, R, Tw, lam_yl = summary(a, G, T0)
     print(f"stiff: P {P:.2f} kPa (target 364), mean stretch {lam:.5f} (Young-Laplace {lam_yl:.5f}), "
@@ -71,6 +69,9 @@ def main():
     e = Feq / (2 * math.pi * R * Tw) - 1
     T.check("stiff: equatorial force = 2 pi R T(lam) of the wall (5%)", abs(e) < 0.05, f"{e:+.2%}")
 
+
+def test_respa_inflation(coarse_cell):
+    d = coarse_cell
     a = inflate(d, "respa", -364.0, 20000, respa=True)
     P = a[-4:, 4].mean()
     print(f"respa (bonds 1 ns, SPH 2 ns): P {P:.2f} kPa after {a[-1, 1]:g} us")
@@ -79,16 +80,14 @@ def main():
     T.check("respa: mass change = integrated osmotic flux", dm_err < 1e-9, f"{dm_err:.1e}")
     T.check("respa: no leaks", np.all(a[:, 10] == 0))
 
-    ratios = []
+
+def test_inflation_at_other_pressures(coarse_cell):
+    """The inflations to 100, 200 and 400 kPa run (lmp fails the test otherwise); their
+    F_eq / (P pi R^2) and stretch are printed, not asserted (see above)."""
+    d = coarse_cell
     print(f"{'P target':>9s} {'P':>8s} {'lam':>8s} {'lam YL':>8s} {'F_eq':>10s} {'P pi R^2':>10s} ratio")
     for Pt in (100.0, 200.0, 400.0):
         a = inflate(d, f"yl{int(Pt)}", -Pt, 20000)
         P, lam, Feq, R, Tw, lam_yl = summary(a, G, T0)
         ratio = Feq / (P * math.pi * R * R)
-        ratios.append(ratio)
         print(f"{Pt:9.0f} {P:8.2f} {lam:8.5f} {lam_yl:8.5f} {Feq:10.4g} {P * math.pi * R * R:10.4g} {ratio:.3f}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -5,6 +5,8 @@ fluid particles are added at known places - outside the wall (beyond a node, bey
 just inside it between the nodes, and in the second cell's wall region but belonging to the first
 - and the leak column must count exactly the outside ones, on 1 and on 2 ranks.
 """
+import pytest
+
 import lmptest as T
 
 COARSE = dict(T.COARSE)
@@ -28,21 +30,21 @@ print           "LEAKS ${leak1} ${leak2} ${nf1}"
 """
 
 
-def main():
-    d = T.workdir("leaks")
+@pytest.fixture(scope="module")
+def two_cells(rundir):
     T.cellgen("cell", "-o", "two.data", "--level", 3, "--nfluid", 200, "--inset", 3.2,
-              "--centres", "0,0,0;80,0,0", "--pad", 20, cwd=d)
-    for n in (1, 2):
-        _, log = T.lmp(f"include {T.INPUTS}/in.inflate\n" + EXTRA, cwd=d, nprocs=n,
-                       variables=dict(COARSE, dir=T.INPUTS, data="two.data", nsteps=0, Lp=0.0),
-                       log=f"log.{n}")
-        line = [l for l in log.splitlines() if l.startswith("LEAKS")][-1].split()
-        leak1, leak2, nf1 = float(line[1]), float(line[2]), float(line[3])
-        print(f"{n} rank(s): cell 1 leaks {leak1:g}, cell 2 leaks {leak2:g}, cell 1 fluid {nf1:g}")
-        T.check(f"{n} rank(s): the three outside particles of cell 1 are counted", leak1 == 3)
-        T.check(f"{n} rank(s): no leak in cell 2", leak2 == 0)
-    T.finish()
+              "--centres", "0,0,0;80,0,0", "--pad", 20, cwd=rundir)
+    return rundir
 
 
-if __name__ == "__main__":
-    main()
+@pytest.mark.parametrize("n", (1, 2))
+def test_outside_fluid_counted_as_leak(two_cells, n):
+    d = two_cells
+    _, log = T.lmp(f"include {T.INPUTS}/in.inflate\n" + EXTRA, cwd=d, nprocs=n,
+                   variables=dict(COARSE, dir=T.INPUTS, data="two.data", nsteps=0, Lp=0.0),
+                   log=f"log.{n}")
+    line = [l for l in log.splitlines() if l.startswith("LEAKS")][-1].split()
+    leak1, leak2, nf1 = float(line[1]), float(line[2]), float(line[3])
+    print(f"{n} rank(s): cell 1 leaks {leak1:g}, cell 2 leaks {leak2:g}, cell 1 fluid {nf1:g}")
+    T.check(f"{n} rank(s): the three outside particles of cell 1 are counted", leak1 == 3)
+    T.check(f"{n} rank(s): no leak in cell 2", leak2 == 0)

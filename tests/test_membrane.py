@@ -24,8 +24,11 @@ import sys
 import time
 
 import numpy as np
+import pytest
+from scipy.integrate import quad
+from scipy.optimize import brentq
 
-import lmptest as T  # check/finish helpers only: no LAMMPS run here
+import lmptest as T  # the check helper only: no LAMMPS run here
 from cellmech import membrane as M
 
 G_T0, R0 = T.STIFF["G"] * T.STIFF["t0"], T.CELL["R"]
@@ -45,11 +48,18 @@ def volume_by_quadrature(curve):
     return 2.0 * simpson(math.pi * r * r * l1 * np.sin(psi), x=th) * R0 ** 3
 
 
-def main():
-    t_start = time.process_time()
-    strains = [0.0, 0.05, 0.1, 0.15, 0.2]
-    print(f"stiff cell: G t0 = {G_T0:g} nN/um, R0 = {R0:g} um")
+STRAINS = [0.0, 0.05, 0.1, 0.15, 0.2]
+# the turgor series and the strains of each curve that the virtual-work check (c) differentiates at
+VW_CASES = {364.0: (0.05, 0.15), 300.0: (), 30.0: (0.1,), 3.0: (0.1,)}
+T_START = time.process_time()     # the module's CPU time, from its import (the last test)
 
+
+def bond(lam):          # Eq. 19 bond energy per G t0 l0^2 / sqrt3 (physics/tether.h)
+    return 0.5 * lam * lam - 0.75 + 0.25 * lam ** -4
+
+
+def test_first_contact_is_young_laplace():
+    print(f"stiff cell: G t0 = {G_T0:g} nN/um, R0 = {R0:g} um")
     # ---- (a) first contact -> Young-Laplace
     print("\n(a) eps -> 0: r_eq and p against the Young-Laplace sphere")
     for P in (364.0, 3.0):
@@ -69,9 +79,14 @@ def main():
                 and abs(law) < 10 * sys.float_info.epsilon / (lam - 1.0),
                 f"r_eq {er:+.1e}, p {ep:+.1e}, law {law:.1e}")
 
+
+@pytest.fixture(scope="module")
+def curves():
+    """The curves of the turgor series: P -> (the curve, its states by strain)."""
+    strains = STRAINS
+    vw_cases = VW_CASES
     # ---- curves of the turgor series, with the checks along them; each continuation also
     # passes the strains e +- h, e +- h/2 that the virtual-work check (c) differentiates over
-    vw_cases = {364.0: (0.05, 0.15), 300.0: (), 30.0: (0.1,), 3.0: (0.1,)}
     curves = {}
     for P, vw in vw_cases.items():
         c = M.Curve(G_T0, R0, P)
@@ -83,7 +98,12 @@ def main():
                 d["V_quad"] = volume_by_quadrature(c)
             rows[e] = d
         curves[P] = (c, rows)
+    return curves
 
+
+def test_turgor_series_balances(curves):
+    """(b) volume, (d) equatorial balance, (g) no compressive tension, (f) F increasing."""
+    strains = STRAINS
     print("\nturgor series (stiff cell), F in nN (= 1e-3 uN)")
     print(f"{'P kPa':>6s} {'eps':>5s} {'F nN':>11s} {'p kPa':>9s} {'a um':>8s} {'a_slack':>8s} "
           f"{'r_eq um':>9s} {'(b) V err':>9s} {'(d) F_eq err':>12s} {'min T':>9s}")
@@ -112,11 +132,15 @@ def main():
         print(f"(g) P {P:g} kPa: slack centre from eps = {c.eps_slack:.5f}" if c.eps_slack else
               f"(g) P {P:g} kPa: no slack centre up to eps 0.2")
 
+
+def test_slack_onset_decreases_with_turgor(curves):
     # slack onset falls with turgor: the prestretch that the flattening must undo shrinks
     onsets = [curves[P][0].eps_slack for P in (364.0, 300.0, 30.0, 3.0)]
     T.check("(g) slack onset decreases with turgor", all(o is not None for o in onsets)
             and np.all(np.diff(onsets) < 0), " ".join(f"{o:.5f}" for o in onsets))
 
+
+def test_slack_centre_lowers_energy(curves):
     # the tension field relaxes the energy: at the same strain and volume the slack-centre state
     # stores less strain energy than the classical one, whose pole carries compression
     print("\n(g) strain energy: slack centre against the classical (compressed pole) branch, 364 kPa")
@@ -131,17 +155,27 @@ def main():
         # energies are converged to ~1e-9 relative (e): the difference is far above that
         T.check(f"(g) eps {e:.2f}: slack centre has the lower energy", du < -1e-6, f"{du:+.1e}")
 
-    # ---- (b) compressible contents
-    print("\n(b) contents of bulk modulus K = 7e4 kPa: V against V0 (1 - (p - P)/K)")
+
+@pytest.fixture(scope="module")
+def compressible():
+    """(b) the 364 kPa curve with contents of bulk modulus K_FLUID: the curve and its states."""
     ck = M.Curve(G_T0, R0, 364.0, bulk_modulus=K_FLUID)
-    V0 = 4.0 / 3.0 * math.pi * ck.R_infl ** 3
     krows = {}
     for e in sorted({0.1, 0.2} | {0.15 + s * VW_H for s in (-1, -0.5, 0, 0.5, 1)}):
         d = ck.dimensional(e, ck.advance(e))
+        if e in (0.1, 0.2):
+            d["V_quad"] = volume_by_quadrature(ck)
         krows[e] = d
-        if e not in (0.1, 0.2):
-            continue
-        Vq = volume_by_quadrature(ck)
+    return ck, krows
+
+
+def test_compressible_contents(curves, compressible):
+    ck, krows = compressible
+    print("\n(b) contents of bulk modulus K = 7e4 kPa: V against V0 (1 - (p - P)/K)")
+    V0 = 4.0 / 3.0 * math.pi * ck.R_infl ** 3
+    for e in (0.1, 0.2):
+        d = krows[e]
+        Vq = d["V_quad"]
         law = V0 * (1.0 - (d["p"] - 364.0) / K_FLUID)
         err = Vq / law - 1.0
         F_inc = curves[364.0][1][e]["F"]
@@ -151,9 +185,13 @@ def main():
         T.check(f"(b) K: eps {e:.1f} compressible contents are softer", d["F"] < F_inc,
                 f"{d['F'] / F_inc - 1:+.2%}")
 
+
+def test_virtual_work(curves, compressible):
+    """(c) F = (dU - p dV) / dDeltaX, on the incompressible curves and the compressible one."""
     # ---- (c) virtual work: F = (dU - p dV) / dDeltaX
     print("\n(c) F = p pi a^2 against virtual work (dU - p dV)/dDeltaX, Richardson on h, h/2")
-    cases = [(P, None, e, curves[P][1]) for P, vw in vw_cases.items() for e in vw]
+    _, krows = compressible
+    cases = [(P, None, e, curves[P][1]) for P, vw in VW_CASES.items() for e in vw]
     for P, K, e, rows in cases + [(364.0, K_FLUID, 0.15, krows)]:
         est = []
         for h in (VW_H, 0.5 * VW_H):
@@ -170,6 +208,8 @@ def main():
         # what is left is the energy's quadrature and solver error over dDeltaX ~ 1e-3 R
         T.check(f"(c) P {P:g} K {K} eps {e:.2f}: virtual work", abs(err) < 2e-5, f"{err:+.1e}")
 
+
+def test_convergence_with_tolerance():
     # ---- (e) convergence with the collocation tolerance
     print("\n(e) F against the collocation tolerance: each state re-solved from a coarse guess")
     for P in (364.0, 3.0):
@@ -190,6 +230,9 @@ def main():
             T.check(f"(e) P {P:g} eps {e:.1f}: F within 10 tol of the tol-1e-9 result",
                     all(abs(errs[tol]) < 10 * tol for tol in (1e-5, 1e-6, 1e-7)),
                     f"{max(abs(errs[tol]) for tol in (1e-5, 1e-6, 1e-7)):.1e}")
+
+
+def test_pole_offset_negligible():
     # the classical branch's pole condition sits at POLE * theta_c
     keep = M.POLE
     f = []
@@ -201,6 +244,8 @@ def main():
     print(f"  classical branch, P 364 eps 0.05: F with pole offset 1e-3 / 1e-4 theta_c: {err:+.1e}")
     T.check("(e) pole offset negligible", abs(err) < 1e-6, f"{err:+.1e}")
 
+
+def test_small_strain_log_slope():
     # ---- (f) small-strain limit: outside a contact disc of radius a the wall is a membrane of
     # tension T0 = P R / 2 pulled by F = p pi a^2, slope F/(2 pi T0 r): the pole sinks by
     # (F/(2 pi T0)) ln(R/a) + O(a^2), so eps R^2/a^2 = ln(R/a) + C: unit slope in ln(R/a)
@@ -215,14 +260,12 @@ def main():
         T.check(f"(f) P {P:g}: log slope -> 1", abs(slopes[0] - 1.0) < 1e-2
                 and abs(slopes[0] - 1.0) < abs(slopes[1] - 1.0), f"{slopes[0]:.5f}")
 
+
+def test_network_law():
+    """(h) the network law: W the orientation average of the bond energy, its tensions W's
+    derivatives, equibiaxially the Neo-Hookean law."""
     # ---- (h) material="network": the orientation-averaged tether network (Eq. 19 bonds)
     print("\n(h) network law: W against direct quadrature over bond directions, tensions, moduli")
-    from scipy.integrate import quad
-    from scipy.optimize import brentq
-
-    def bond(lam):          # Eq. 19 bond energy per G t0 l0^2 / sqrt3 (physics/tether.h)
-        return 0.5 * lam * lam - 0.75 + 0.25 * lam ** -4
-
     werr, terr = 0.0, 0.0
     for l1, l2 in ((1.1, 0.95), (1.3, 1.05), (0.9, 1.2)):
         Wq = 2.0 * quad(lambda ph: bond(math.hypot(l1 * math.cos(ph), l2 * math.sin(ph))),
@@ -250,6 +293,9 @@ def main():
     # ~ 1/(lam - 1) = 1e4 at lam 1.0001)
     T.check("(h) equibiaxial tension: network = Neo-Hookean", eq < 1e4 * 4 * sys.float_info.epsilon,
             f"{eq:.1e}")
+
+
+def test_network_small_strain_moduli():
     e = 1e-4
     mu = {m: (law[0](1 + e, 1 - e)[0] - law[0](1 + e, 1 - e)[1]) / (4 * e)
           for m, law in M.MATERIALS.items()}
@@ -269,6 +315,8 @@ def main():
             abs(E["network"] / 4.0 - 1.0) < 2e-3 and abs(E["neohookean"] / 3.0 - 1.0) < 2e-3,
             f"{E['network']:.5f}, {E['neohookean']:.5f}")
 
+
+def test_network_compression(curves):
     print("\n(h) network compression, 364 kPa, incompressible: balances, tension field, virtual work")
     cn = M.Curve(G_T0, R0, 364.0, material="network")
     nrows = {}
@@ -302,11 +350,9 @@ def main():
           f"the slack edge lam1 = lam2 = 1 is the network energy's stationarity condition too")
     T.check("(h) network eps 0.15: virtual work", abs(err) < 2e-5, f"{err:+.1e}")
 
-    cpu = time.process_time() - t_start
+
+def test_cpu_time():
+    """The module's checks run in under 60 s of CPU (the last test: T_START is its import)."""
+    cpu = time.process_time() - T_START
     print(f"\nCPU time {cpu:.1f} s")
     T.check("runs in under 60 s of CPU", cpu < 60.0, f"{cpu:.1f} s")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -33,6 +33,7 @@ import os
 import re
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech.cellgen.datafile import read_data
@@ -163,12 +164,23 @@ write_dump      all local pairs.dump c_pairs[1] c_pairs[2]
     return len(fail), gap
 
 
-def main():
-    d = T.workdir("membrane_failure")
+@pytest.fixture(scope="module")
+def wall(rundir):
+    """The coarse wall alone (cell.data): the run folder, its reference positions, triangles and
+    tethers."""
+    d = rundir
     T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 0, cwd=d)
     ref, tri, bonds = read_wall(os.path.join(d, "cell.data"))
+    return d, ref, tri, bonds
+
+
+def test_level3_wall(wall):
+    _, _, tri, bonds = wall
     T.check("level-3 wall: 1280 triangles, 1920 tethers", len(tri) == 1280 and len(bonds) == 1920)
 
+
+def test_failure_threshold(wall):
+    d, ref, tri, _ = wall
     # 1. threshold
     nfail, gap = threshold_case(d, "uniaxial 1.06", ref, tri, 1.06, 1.0, 1.0, 1.03)
     T.check("uniaxial 1.06, lamf 1.03: a region fails, not all", 0 < nfail < 1280, nfail)
@@ -183,6 +195,9 @@ def main():
         n, _ = threshold_case(d, name, ref, tri, *s, 1.0001)
         T.check(f"{name}, lamf 1.0001: no triangle fails (tension only)", n == 0, n)
 
+
+def test_equatorial_force(wall):
+    d, ref, _, _ = wall
     # the equatorial force (compute cell/props column 8) of the membrane wall: the triangles the
     # plane cuts carry it. A wall scaled by lam is stretched equibiaxially, where the element and
     # the tethers have the same law (T = G t0 (1 - lam^-6) per current length), so both walls must
@@ -213,7 +228,21 @@ print           "FEQ $(c_props[1][8]:%.10g)"
     T.check("equatorial force of the membrane wall within 2% of the closed form",
             abs(feq["membrane"] / closed - 1) < 0.02, f"{feq['membrane'] / closed - 1:.2e}")
 
-    # 2. progressive failure: 1 vs 2 ranks, restart while failing
+
+def history(log):
+    """The thermo rows (step, open edges, angles, bonds) of a log."""
+    rows = re.findall(r"^\s+(\d+)\s+(\S+)\s+(\d+)\s+(\d+)\s*$", log, flags=re.M)
+    return [tuple(float(v) for v in r) for r in rows]
+
+
+N1, N2 = 120, 120     # steps before and after the restart of the progressive failure
+
+
+@pytest.fixture(scope="module")
+def thrown(wall):
+    """2. progressive failure: the wall thrown outward on 1 and 2 ranks, the 2-rank run restarted
+    while failing; the three logs."""
+    d, ref, _, _ = wall
     f0, r0 = T.COARSE["f0"], T.COARSE["r0"]
     centre = np.mean(np.array(list(ref.values())), axis=0)
     pair = dict(pair="cell/lj84", pcoeff=f"* * {2 * f0} {0.8 * r0}")
@@ -233,7 +262,7 @@ run             {{n2}}
 print           "END $(f_cell_broken) $(angles) $(bonds)"
 write_dump      all custom {{out}} id x y z f_cell_broken modify sort id format float %.17g
 """
-    n1, n2 = 120, 120
+    n1, n2 = N1, N2
     T.lmp(throw.format(n1=n1, n2=n2, mid="", out="np1.dump"), cwd=d, log="log.throw1")
     T.lmp(throw.format(n1=n1, n2=n2, mid="write_restart mid.restart", out="np2.dump"), cwd=d,
           nprocs=2, log="log.throw2")
@@ -256,12 +285,12 @@ print           "END $(f_cell_broken) $(angles) $(bonds)"
 write_dump      all custom cont.dump id x y z f_cell_broken modify sort id format float %.17g
 """
     T.lmp(cont, cwd=d, nprocs=2, log="log.throw-cont")
+    return {k: open(os.path.join(d, f"log.throw{k}")).read() for k in ("1", "2", "-cont")}
 
-    def history(log):
-        rows = re.findall(r"^\s+(\d+)\s+(\S+)\s+(\d+)\s+(\d+)\s*$", log, flags=re.M)
-        return [tuple(float(v) for v in r) for r in rows]
 
-    logs = {k: open(os.path.join(d, f"log.throw{k}")).read() for k in ("1", "2", "-cont")}
+def test_progressive_failure_counts(thrown):
+    n1 = N1
+    logs = thrown
     h1, h2 = history(logs["1"]), history(logs["2"])
     mid = [r for r in h2 if r[0] == n1]
     end = {k: logs[k].split("END ")[-1].split()[:3] for k in logs}
@@ -274,6 +303,10 @@ write_dump      all custom cont.dump id x y z f_cell_broken modify sort id forma
             bool(mid) and 0 < mid[0][1] and 1280 > mid[0][2] > float(end["2"][1]))
     T.check("1 and 2 ranks: the same counts at every output", h1 == h2 and end["1"] == end["2"])
     T.check("restart while failing: the same counts at the end", end["2"] == end["-cont"])
+
+
+def test_progressive_failure_positions(wall, thrown):
+    d = wall[0]
     dumps = {k: np.loadtxt(os.path.join(d, f"{k}.dump"), skiprows=9) for k in ("np1", "np2", "cont")}
     d12 = np.abs(dumps["np1"][:, 1:4] - dumps["np2"][:, 1:4]).max()
     drs = np.abs(dumps["np2"][:, 1:4] - dumps["cont"][:, 1:4]).max()
@@ -286,6 +319,13 @@ write_dump      all custom cont.dump id x y z f_cell_broken modify sort id forma
     T.check("restart while failing continues exactly (1e-9 um, per-node counts)",
             drs < 1e-9 and dnrs == 0, f"{drs:.1e}")
 
+
+@pytest.fixture(scope="module")
+def fluid_cell(wall):
+    """3. a loaded cell with fluid: the membrane wall around the coarse fluid (fluid.data); the
+    input lines of the cell and its model lengths."""
+    d = wall[0]
+    r0 = T.COARSE["r0"]
     # 3. a loaded cell with fluid: (a) compressed protoplasm and osmosis burst the wall, and
     # osmosis stops with the first failure; (b) the fluid pushed against one side of the wall
     # (body force on the fluid, the other hemisphere of the wall held) opens it there and leaves
@@ -306,6 +346,12 @@ timestep        0.001
 """
     model = {k: T.COARSE[k] for k in ("s", "r0", "f0", "reach")}
     model["mu"] = 10.0
+    return cell, model
+
+
+def test_osmotic_burst(wall, fluid_cell):
+    d = wall[0]
+    cell, model = fluid_cell
     osmosis = cell + """
 # the protoplasm starts compressed to about the stiff cell's turgor (364 kPa: rho/rho0 = 1.0051
 # by the Tait equation with kappa = 10 MPa), so the wall is loaded at once
@@ -333,6 +379,10 @@ run             1000
         T.check("burst: osmosis works before the failure and stops with it",
                 gained > 0 and after == 0, f"{gained:.4g} {after:.3g}")
 
+
+def test_fluid_escapes_through_failure(wall, fluid_cell):
+    d = wall[0]
+    cell, model = fluid_cell
     push = cell + """
 fix             dens fluid cell/fluid Pi 0 Lp 0
 variable        xc equal xcm(wall,x)
@@ -367,6 +417,9 @@ run             1500
     T.check("push, lamf 10: the wall holds and keeps all fluid in",
             k is None and rows[:, 2].max() == 0, f"{rows[:, 2].max():.0f}")
 
+
+def test_bad_input_refused(wall):
+    d = wall[0]
     # 4. bad input
     base = SETUP.format(G=G, t0=T0, gamma=0.0, lamf=1.05, pair="zero 8.0", pcoeff="* *")
     bad = {
@@ -381,8 +434,3 @@ run             1500
         print(f"{name}: rc {rc}, {msg[-1] if msg else 'no error'}")
         T.check(f"bad input ({name}) is refused with a clear error",
                 rc != 0 and any(expect in l for l in msg), msg[-1] if msg else "no error")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

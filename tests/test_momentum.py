@@ -30,8 +30,8 @@ run             2000
 """
 
 
-def main():
-    d = T.workdir("momentum")
+def test_momentum_conserved(rundir):
+    d = rundir
     T.coarse_cell(d)
     for mu in (0.0, 10.0):
         T.lmp(f"include {T.INPUTS}/in.inflate\n" + EXTRA, cwd=d, log=f"log.mu{mu}", variables=dict(
@@ -46,8 +46,3 @@ def main():
         T.check(f"mu={mu}: linear momentum conserved to round-off", dp < 1e-10, f"{dp:.1e}")
         if mu == 0.0:
             T.check("inviscid: angular momentum conserved to round-off", dl < 1e-10, f"{dl:.1e}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

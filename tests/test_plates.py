@@ -17,8 +17,8 @@ import lmptest as T
 KP, GAP, V, DT = 1.0e6, 0.5, 1.0, 0.001
 
 
-def main():
-    d = T.workdir("plates")
+def test_plate_force_and_impulse(rundir):
+    d = rundir
     T.cellgen("cell", "-o", "wall.data", "--level", 3, "--nfluid", 0, cwd=d)
     extra = f"""
 variable        dir index {T.INPUTS}
@@ -55,8 +55,3 @@ run             2500
     print(f"momentum: max |dP - impulse| / max impulse = {err:.2e}; over the run {total:.2e}; "
           f"final P_z = {P[-1]:.6g} pg um/us")
     T.check("momentum changes by the plate impulse every step", err < 1e-8)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

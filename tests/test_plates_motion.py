@@ -14,6 +14,7 @@
 About 25 s on one core.
 """
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech import quasistatic as Q
@@ -30,10 +31,20 @@ def compress(d, name, **extra):
     return load(f"{d}/{name}.dat", Q.CELL_COMPRESS), d0
 
 
-def main():
-    d = T.workdir("plates_motion")
-    T.inflate_coarse(d, nsteps=10000, every=1000)
-    rec, d0 = compress(d, "both", plates="both", ramp=RAMP)
+@pytest.fixture(scope="module")
+def inflated(rundir):
+    T.inflate_coarse(rundir, nsteps=10000, every=1000)
+    return rundir
+
+
+@pytest.fixture(scope="module")
+def both(inflated):
+    """The compression by both plates with the ramp: its record and the initial gap."""
+    return compress(inflated, "both", plates="both", ramp=RAMP)
+
+
+def test_closing_speed_follows_ramp(both):
+    rec, d0 = both
     t = rec["time_us"]
     closing = rec["strain"] * d0                       # the gaps are a constant offset
     speed = np.diff(closing) / np.diff(t)
@@ -44,24 +55,32 @@ def main():
     err = float(np.max(np.abs(speed - law)[moving]))
     T.check("the closing speed follows the ramp law (1% of vplate)", err < 0.01 * V,
             f"largest difference {err:.2e} um/us over {int(moving.sum())} intervals, ramp {tramp:.3g} us")
-    top, _ = compress(d, "top", plates="top", ramp=0)
+
+
+def test_both_plates_keep_momentum(inflated, both):
+    rec, _ = both
+    top, _ = compress(inflated, "top", plates="top", ramp=0)
     pz_both = float(np.max(np.abs(rec["pz_pg_um_us"])))
     pz_top = float(np.max(np.abs(top["pz_pg_um_us"])))
     T.check("both plates: the cell's z momentum stays below 5% of the top plate's alone", pz_both < 0.05 * pz_top,
             f"both {pz_both:.4g}, top alone {pz_top:.4g} pg um/us")
+
+
+def test_plates_work(both):
+    rec, d0 = both
+    t = rec["time_us"]
+    tramp = 2 * RAMP * d0 / V
     vnow = V * np.minimum(t / tramp, 1.0)
     trap = integral(0.5 * (rec["F_top_nN"] + rec["F_bottom_nN"]) * vnow, t)
     W = float(rec[Q.WORK][-1])
     T.check("the plates' work is the integral of each plate's force times its speed (1%)",
             abs(W / trap - 1) < 0.01, f"recorded {W:.5g}, from the records {trap:.5g} nN um")
-    rc, log = T.lmp(T.INPUTS + "/in.compress", cwd=d, log="log.bad", check=False, variables=dict(
+
+
+def test_ramp_longer_than_travel_refused(inflated):
+    rc, log = T.lmp(T.INPUTS + "/in.compress", cwd=inflated, log="log.bad", check=False, variables=dict(
         T.COARSE, dir=T.INPUTS, restart="inflated.restart", vplate=V, strain=0.05, ramp=0.2, every=EVERY,
         out="bad.dat"))
     T.check("a ramp longer than the travel is refused", rc != 0 and
             "ERROR: motion.lmp: -var ramp 0.2: expected a strain >= 0 over which the speed rises" in log,
             log.strip().splitlines()[-1][:160] if log else f"rc {rc}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

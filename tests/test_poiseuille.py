@@ -49,6 +49,7 @@ Checks, each printed with its numbers:
 import math
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from channel import C, DT, DX, G, L, NBLOCK, NL, NU, RHO0, S, channel_input
@@ -128,53 +129,48 @@ def l2(a, b):
     return np.sqrt(np.sum((a - b) ** 2) / np.sum(b ** 2))
 
 
-def main():
-    for wall in ("fixed", "mirror"):
-        blocks, thermo, perf = run(wall)
-        step, tab = blocks[-1]
-        keep = tab[:, 2] > 0                   # columns: chunk, y, count, vx, vy, density/number
-        y = tab[keep, 1]
-        last, prev = tab[keep, 3], blocks[-2][1][keep, 3]
-        v = 0.5 * (last + prev)                # steps NSTEPS - 2 NBLOCK ... NSTEPS
-        model, g = discrete_steady(wall)
-        K = -2.0 * sum(gd * (dd * DX) ** 2 for dd, gd in g.items()) * RHO0 * DX ** 3 / RHO0
-        ve = exact(y)
-        tol_exact = l2(exact(y, -0.1 * DX, L + 0.1 * DX), ve) + (1.0 / K - 1.0)
-        t0 = (step - 2 * NBLOCK) * DT
-        print(f"\n=== walls '{wall}': {len(y)} fluid layers, profile averaged over steps "
-              f"{step - 2 * NBLOCK}-{step} (t = {t0:.2f}-{step * DT:.2f} us); {perf}")
-        print(f"{'y':>6s} {'v_sim':>12s} {'v_discrete':>12s} {'v_exact':>12s} {'sim/exact':>10s}")
-        for yy, a, b, c in zip(y, v, model, ve):
-            print(f"{yy:6.2f} {a:12.6g} {b:12.6g} {c:12.6g} {a / c:10.4f}")
-        steady = l2(last, prev)
-        e_model = l2(v, model)
-        e_exact = l2(v, ve)
-        y0, y1, nufit = fit_walls(y, v)
-        rmax = max(t[3] for t in thermo)
-        vymax = max(abs(t[4]) for t in thermo)
-        print(f"lattice viscous factor K = {K:.5f} (effective viscosity K nu); max |rho - rho0| "
-              f"{rmax:.2e}, max |v_y| {vymax:.1e} um/us; v_max sim {v.max():.6g}, exact {ve.max():.6g}, "
-              f"Mach {v.max() / C:.4f}")
-        print(f"fitted parabola: no-slip planes at y = {y0:.4f} and {y1:.4f} um (half-spacing rule: 0 and "
-              f"{L:g}), nu_fit = {nufit:.2f} (nu = {NU:g}, K nu = {K * NU:.2f})")
-        print(f"relative L2: last two blocks {steady:.1e}, sim vs discrete steady {e_model:.2e}, sim vs "
-              f"exact {e_exact:.4f} (tolerance: wall shift dx/10 + (1/K - 1) = {tol_exact:.4f}), "
-              f"discrete steady vs exact {l2(model, ve):.4f}")
-        T.check(f"{wall}: steady (last two {NBLOCK}-step blocks agree)", steady < TOL_STEADY,
-                f"{steady:.1e} < {TOL_STEADY:g}")
-        T.check(f"{wall}: profile = exact steady state of the discrete equations",
-                e_model < TOL_MODEL, f"L2 {e_model:.2e} < {TOL_MODEL:g}")
-        if wall == "mirror":
-            T.check(f"{wall}: profile = Poiseuille G/(2 nu) y (L - y), no-slip planes half a spacing out",
-                    e_exact < tol_exact, f"L2 {e_exact:.4f} < {tol_exact:.4f}")
-        else:
-            # wall particles at rest are themselves the zero-velocity points: the no-slip plane is
-            # the first wall layer, not half a spacing out (printed above, not asserted)
-            e_layer = l2(v, exact(y, -0.5 * DX, L + 0.5 * DX))
-            T.check(f"{wall}: profile = Poiseuille with the no-slip planes at the first wall-particle layers",
-                    e_layer < tol_exact, f"L2 {e_layer:.4f} < {tol_exact:.4f}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()
+@pytest.mark.parametrize("wall", ("fixed", "mirror"))
+def test_poiseuille_profile(wall):
+    blocks, thermo, perf = run(wall)
+    step, tab = blocks[-1]
+    keep = tab[:, 2] > 0                   # columns: chunk, y, count, vx, vy, density/number
+    y = tab[keep, 1]
+    last, prev = tab[keep, 3], blocks[-2][1][keep, 3]
+    v = 0.5 * (last + prev)                # steps NSTEPS - 2 NBLOCK ... NSTEPS
+    model, g = discrete_steady(wall)
+    K = -2.0 * sum(gd * (dd * DX) ** 2 for dd, gd in g.items()) * RHO0 * DX ** 3 / RHO0
+    ve = exact(y)
+    tol_exact = l2(exact(y, -0.1 * DX, L + 0.1 * DX), ve) + (1.0 / K - 1.0)
+    t0 = (step - 2 * NBLOCK) * DT
+    print(f"\n=== walls '{wall}': {len(y)} fluid layers, profile averaged over steps "
+          f"{step - 2 * NBLOCK}-{step} (t = {t0:.2f}-{step * DT:.2f} us); {perf}")
+    print(f"{'y':>6s} {'v_sim':>12s} {'v_discrete':>12s} {'v_exact':>12s} {'sim/exact':>10s}")
+    for yy, a, b, c in zip(y, v, model, ve):
+        print(f"{yy:6.2f} {a:12.6g} {b:12.6g} {c:12.6g} {a / c:10.4f}")
+    steady = l2(last, prev)
+    e_model = l2(v, model)
+    e_exact = l2(v, ve)
+    y0, y1, nufit = fit_walls(y, v)
+    rmax = max(t[3] for t in thermo)
+    vymax = max(abs(t[4]) for t in thermo)
+    print(f"lattice viscous factor K = {K:.5f} (effective viscosity K nu); max |rho - rho0| "
+          f"{rmax:.2e}, max |v_y| {vymax:.1e} um/us; v_max sim {v.max():.6g}, exact {ve.max():.6g}, "
+          f"Mach {v.max() / C:.4f}")
+    print(f"fitted parabola: no-slip planes at y = {y0:.4f} and {y1:.4f} um (half-spacing rule: 0 and "
+          f"{L:g}), nu_fit = {nufit:.2f} (nu = {NU:g}, K nu = {K * NU:.2f})")
+    print(f"relative L2: last two blocks {steady:.1e}, sim vs discrete steady {e_model:.2e}, sim vs "
+          f"exact {e_exact:.4f} (tolerance: wall shift dx/10 + (1/K - 1) = {tol_exact:.4f}), "
+          f"discrete steady vs exact {l2(model, ve):.4f}")
+    T.check(f"{wall}: steady (last two {NBLOCK}-step blocks agree)", steady < TOL_STEADY,
+            f"{steady:.1e} < {TOL_STEADY:g}")
+    T.check(f"{wall}: profile = exact steady state of the discrete equations",
+            e_model < TOL_MODEL, f"L2 {e_model:.2e} < {TOL_MODEL:g}")
+    if wall == "mirror":
+        T.check(f"{wall}: profile = Poiseuille G/(2 nu) y (L - y), no-slip planes half a spacing out",
+                e_exact < tol_exact, f"L2 {e_exact:.4f} < {tol_exact:.4f}")
+    else:
+        # wall particles at rest are themselves the zero-velocity points: the no-slip plane is
+        # the first wall layer, not half a spacing out (printed above, not asserted)
+        e_layer = l2(v, exact(y, -0.5 * DX, L + 0.5 * DX))
+        T.check(f"{wall}: profile = Poiseuille with the no-slip planes at the first wall-particle layers",
+                e_layer < tol_exact, f"L2 {e_layer:.4f} < {tol_exact:.4f}")

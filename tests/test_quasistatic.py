@@ -27,6 +27,7 @@ plate 30 uN against the top one's 225 uN), KE/W 40-46%; slow, imbalance 0.41% at
 0.19% at most.
 """
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech import quasistatic as Q
@@ -48,13 +49,31 @@ def compress(d, name):
     return load(f"{d}/{name}.dat", Q.CELL_COMPRESS)
 
 
-def work_is_recorded(name, rec):
+@pytest.fixture(scope="module")
+def compressed(rundir):
+    """The coarse cell inflated, then compressed fast and slow: each run's record, its windows
+    (balance, energy) and the verdict of the quasi-static checks."""
+    d = rundir
+    T.inflate_coarse(d, nsteps=25000, every=1000)
+    out = {}
+    for name, (v, strain, (lo, hi)) in RUNS.items():
+        rec = compress(d, name)
+        bal, en, _, ver = Q.check(rec, lo, hi)
+        print(Q.report(bal, en, None, ver, f"{name}: {v} m/s to {strain:.0%} strain, mu {MU:g} mPa s"))
+        print()
+        out[name] = rec, bal, en, ver
+    return out
+
+
+@pytest.mark.parametrize("name", RUNS)
+def test_work_recorded(compressed, name):
     """W never decreases (F_top >= 0, the plate moves one way) and is the integral of F_top over
     the plate's travel v (t - t0). The input sums every step; the trapezoid here has only the
     records, one every 0.1 us, and misses the ringing between them: 0.14% at 2 m/s. 1% allows
     that several times over and still catches a sum over the wrong steps or with the wrong step,
     which is off by a factor."""
     v = RUNS[name][0]
+    rec = compressed[name][0]
     W = rec[Q.WORK]
     trap = integral(rec["F_top_nN"], v * rec["time_us"])
     T.check(f"{name}: the plate's work never decreases", np.all(np.diff(W) >= -1e-9 * W[-1]))
@@ -63,29 +82,23 @@ def work_is_recorded(name, rec):
             f"recorded {W[-1]:.4g}, from the records {trap:.4g} nN um ({W[-1] / trap - 1:+.2%})")
 
 
-def main():
-    d = T.workdir("quasistatic")
-    T.inflate_coarse(d, nsteps=25000, every=1000)
-    verdicts = {}
-    for name, (v, strain, (lo, hi)) in RUNS.items():
-        rec = compress(d, name)
-        bal, en, _, ver = Q.check(rec, lo, hi)
-        print(Q.report(bal, en, None, ver, f"{name}: {v} m/s to {strain:.0%} strain, mu {MU:g} mPa s"))
-        print()
-        verdicts[name] = ver
-        T.check(f"{name}: every window judged (none before contact, none short of records)",
-                all(r.imbalance is not None for r in bal) and all(r.ratio is not None for r in en),
-                f"{len(bal)} windows")
-        work_is_recorded(name, rec)
-    fast, slow = verdicts["fast"], verdicts["slow"]
+@pytest.mark.parametrize("name", RUNS)
+def test_every_window_judged(compressed, name):
+    _, bal, en, _ = compressed[name]
+    T.check(f"{name}: every window judged (none before contact, none short of records)",
+            all(r.imbalance is not None for r in bal) and all(r.ratio is not None for r in en),
+            f"{len(bal)} windows")
+
+
+def test_fast_compression_flagged_dynamic(compressed):
+    fast = compressed["fast"][3]
     T.check("fast: flagged dynamic on the balance and on the kinetic energy",
             not fast.quasistatic and fast.failed == ["balance", "ke_over_work"],
             f"imbalance {fast.numbers['balance']:.1%}, KE/W {fast.numbers['ke_over_work']:.2%}")
+
+
+def test_slow_compression_quasistatic(compressed):
+    slow = compressed["slow"][3]
     T.check("slow: quasi-static (balance within 5%, KE/W below 1% in every window)", slow.quasistatic,
             f"imbalance {slow.numbers['balance']:.2%}, KE/W {slow.numbers['ke_over_work']:.2%}"
             + "".join(f"; {r}" for r in slow.reasons))
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

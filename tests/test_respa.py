@@ -38,6 +38,7 @@ The coarse stiff cell, inflated, is pressed by the top plate at 0.5 m/s for 12.8
    setup).
 """
 import numpy as np
+import pytest
 
 import lmptest as T
 
@@ -71,11 +72,26 @@ def with_run_style(line, after=None):
     return "\n".join(lines) + "\n"
 
 
-def main():
-    d = T.workdir("respa")
-    T.inflate_coarse(d, nsteps=4000, every=1000)
+@pytest.fixture(scope="module")
+def inflated(rundir):
+    T.inflate_coarse(rundir, nsteps=4000, every=1000)
+    return rundir
 
-    _, _, verlet = compress(d, "verlet")
+
+@pytest.fixture(scope="module")
+def verlet(inflated):
+    """The compression under Verlet (dt 0.001), microstate 0."""
+    return compress(inflated, "verlet")[2]
+
+
+@pytest.fixture(scope="module")
+def r3(inflated):
+    """The compression under respa 3, microstate 0."""
+    return compress(inflated, "respa3", respa=3)[2]
+
+
+def test_respa_one_level_is_verlet(inflated, verlet):
+    d = inflated
     _, log1, one = compress(d, "respa1", with_run_style("run_style respa 1"))
     T.check("run_style respa 1 is in use", "\nrun_style respa 1\n" in log1)
     rel = np.abs(one - verlet) / np.maximum(np.abs(verlet), 1e-300)
@@ -85,8 +101,12 @@ def main():
     T.check("respa with one level = Verlet to round-off", one.shape == verlet.shape and rel.max() < 1e-12,
             f"{rel.max():.2e}")
 
+
+@pytest.fixture(scope="module")
+def ensemble(inflated, verlet, r3):
+    """Verlet with half the step, and the ensemble of microstates compressed both ways."""
+    d = inflated
     _, _, half = compress(d, "verlet-half", dt=0.0005, every=120)
-    _, _, r3 = compress(d, "respa3", respa=3)
     # the ensemble: this inflated cell (microstate 0) and NSTATES - 1 more, inflated from the
     # fluid displaced by 1e-9 um (in.inflate -var jitter), each compressed both ways
     ens = {"verlet": [verlet], "respa3": [r3]}
@@ -95,6 +115,11 @@ def main():
         ens["verlet"].append(compress(d, f"verlet-j{k}", restart=f"inflated-j{k}.restart")[2])
         ens["respa3"].append(compress(d, f"respa3-j{k}", restart=f"inflated-j{k}.restart",
                                       respa=3)[2])
+    return half, ens
+
+
+def test_runs_record_same_times(ensemble):
+    half, ens = ensemble
     # a record every 0.06 us in each run; their first records depend on the restart's step count
     # modulo each run's record interval
     runs = [half] + ens["verlet"] + ens["respa3"]
@@ -102,6 +127,10 @@ def main():
     T.check(f"the {len(runs)} runs record every 0.06 us up to the same time",
             all(abs(dt - 0.06) < 1e-9 and abs(end - spans[0][1]) < 0.06 for dt, end in spans),
             " ".join(f"{dt:.4g}/{end:.4g}" for dt, end in spans))
+
+
+def test_respa3_matches_single_level(ensemble, verlet):
+    half, ens = ensemble
 
     def late(a):
         """the second half of the run, 3-10% strain: past the first contact's transient"""
@@ -131,6 +160,9 @@ def main():
         T.check(f"respa 3 = single level: {name} (mean over {len(rel)} microstates)",
                 abs(mean) <= tol, f"{mean:+.3%} vs {tol:.0%}")
 
+
+def test_bad_respa_inputs_refused(inflated):
+    d = inflated
     rc, log, _ = compress(d, "bad-respa", check=False, respa=2.5)
     T.check("-var respa 2.5: in.compress stops with its message", rc != 0 and
             "in.compress: -var respa 2.5: expected a whole number >= 1" in log)
@@ -147,32 +179,39 @@ def main():
     T.check("cell/sph on the inner level by 'hybrid': pair cell/sph stops with its message",
             rc != 0 and "must be on the outermost level, where the fix advances the density: "
             "expected level 2 for cell/sph" in log)
+
+
+def test_hybrid_outer_levels_as_pair2(inflated, r3):
+    d = inflated
     rc, log, good = compress(d, "hybrid", with_run_style(
         "run_style respa 2 3 hybrid 2 2 2 bond 1 angle 1"), respa=3)
     T.check("'hybrid' with every sub-style outside = 'pair 2' (respa 3) to round-off",
             good.shape == r3.shape and np.allclose(good, r3, rtol=1e-12, atol=0),
             f"{np.max(np.abs(good - r3) / np.maximum(np.abs(r3), 1e-300)):.2e}")
+
+
+def test_respa_from_first_run(inflated, r3):
+    d = inflated
     # respa from the first run on: fix cell/fluid's setup (cells, pressures) under respa
     _, _, early = compress(d, "respa3-early", with_run_style(
         "run_style respa 2 3 bond 1 angle 1 dihedral 1 pair 2", "include"), respa=3)
     diff = np.max(np.abs(early - r3) / np.maximum(np.abs(r3), 1e-300)) if early.shape == r3.shape else np.inf
     T.check("respa 3 from the run 0 on = respa 3 after it, to round-off", diff < 1e-12, f"{diff:.2e}")
-    # 2 ranks: the ghosts' velocities (contact damping, viscosity, continuity on the outer level)
-    # must be the owners' after the inner levels' last half kick. Over 3% strain 1 and 2 ranks
-    # differ by round-off grown by the fluid's chaos: P, Feq and V by < 1e-8, 1e-7, 0 under Verlet,
-    # < 2e-7, 5e-6, 1e-8 under respa 3; with stale ghost velocities by 3e-2, 2e-2 and 6e-4.
+
+
+# 2 ranks: the ghosts' velocities (contact damping, viscosity, continuity on the outer level)
+# must be the owners' after the inner levels' last half kick. Over 3% strain 1 and 2 ranks
+# differ by round-off grown by the fluid's chaos: P, Feq and V by < 1e-8, 1e-7, 0 under Verlet,
+# < 2e-7, 5e-6, 1e-8 under respa 3; with stale ghost velocities by 3e-2, 2e-2 and 6e-4.
+@pytest.mark.parametrize("name, extra", (("single level", {}), ("respa 3", dict(respa=3))))
+def test_ranks_agree(inflated, name, extra):
+    d = inflated
     cols = {"P": 6, "Feq": 5, "V": 9}
-    for name, extra in (("single level", {}), ("respa 3", dict(respa=3))):
-        runs = [compress(d, f"ranks{n}-{extra.get('respa', 1)}", nprocs=n, strain=0.03, **extra)[2]
-                for n in (1, 2)]
-        rel = {c: np.max(np.abs(runs[1][:, k] / runs[0][:, k] - 1)) if runs[0].shape == runs[1].shape
-               else np.inf for c, k in cols.items()}
-        print(f"{name}, 1 against 2 ranks, largest relative difference: "
-              + " ".join(f"{c} {v:.1e}" for c, v in rel.items()))
-        T.check(f"{name}: 2 ranks = 1 rank within 1e-4 (P, Feq, V)", max(rel.values()) < 1e-4,
-                f"{max(rel.values()):.1e}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()
+    runs = [compress(d, f"ranks{n}-{extra.get('respa', 1)}", nprocs=n, strain=0.03, **extra)[2]
+            for n in (1, 2)]
+    rel = {c: np.max(np.abs(runs[1][:, k] / runs[0][:, k] - 1)) if runs[0].shape == runs[1].shape
+           else np.inf for c, k in cols.items()}
+    print(f"{name}, 1 against 2 ranks, largest relative difference: "
+          + " ".join(f"{c} {v:.1e}" for c, v in rel.items()))
+    T.check(f"{name}: 2 ranks = 1 rank within 1e-4 (P, Feq, V)", max(rel.values()) < 1e-4,
+            f"{max(rel.values()):.1e}")

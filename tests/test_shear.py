@@ -26,8 +26,8 @@ fix             tauprof fluid ave/chunk 100 20 {NSTEPS} chs c_shear[1] c_shear[2
 """
 
 
-def main():
-    d = T.workdir("shear")
+def test_shear_stress_in_poiseuille_flow(rundir):
+    d = rundir
     T.lmp(channel_input("mirror", SHEAR), cwd=d, nprocs=2)
     lines = [l for l in open(f"{d}/shear.dat") if not l.startswith("#")]
     n = int(lines[0].split()[1])
@@ -46,8 +46,3 @@ def main():
     T.check("tau_xz and tau_yz vanish", max(abs(txz).max(), abs(tyz).max()) < 0.02 * wall)
     T.check("|tau| = |tau_xy| (the only shear component)",
             np.allclose(tau, np.abs(txy), atol=0.02 * wall))
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

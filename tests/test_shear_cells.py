@@ -24,6 +24,7 @@ import json
 import os
 
 import numpy as np
+import pytest
 
 import lmptest as T
 
@@ -102,11 +103,39 @@ def same_rows(a, b, tol=1e-12):
     return True
 
 
-def slide(d, common):
+@pytest.fixture(scope="module")
+def inflated(rundir):
+    """The column of three cells inflated part way (at Lp 10) and settled (three.restart): the run
+    folder and the settings of the runs that continue it."""
+    d = rundir
+    # debond logs are appended to: none left from a rerun
+    if os.path.exists(f"{d}/debond.log"):
+        os.remove(f"{d}/debond.log")
+    T.cellgen("tissue", "-o", "three.data", "--lattice", "sc", "--n", 1, 1, 3, "--level", 3,
+              "--nfluid", 440, cwd=d)
+    special = json.load(open(os.path.join(d, "three.json")))["extra_special_per_atom"]
+    common = dict(COARSE, dir=T.INPUTS, Pi=-364.0, Lp=1.0e-9, special=special)
+    # inflated part way (at Lp 10) and settled: the fluid reaches out to its walls, the cells press
+    # on each other
+    T.lmp(f"{T.INPUTS}/in.tissue-inflate", cwd=d,
+          variables=dict(common, Lp=10.0, data="three.data", nsteps=INFLATE, nsettle=SETTLE,
+                         every=500, restart_out="three.restart"),
+          log="log.inflate")
+    return d, common
+
+
+@pytest.fixture(scope="module")
+def slid(inflated):
+    """The middle cell's slide on 1 and 2 ranks (a 2 by 1 by 1 grid)."""
+    d, common = inflated
     for n in (1, 2):
         text = ("processors 2 1 1\n" if n == 2 else "") + SLIDE_IN.replace("{tag}", str(n))
         T.lmp(text, cwd=d, nprocs=n, variables=common, log=f"log.slide{n}")
+    return d
 
+
+def test_rigid_motion_has_no_shear(slid):
+    d = slid
     # 1. rigid motion: zero shear everywhere, exactly
     atoms = dump(f"{d}/atoms.1.dump")    # id mol type x y z alam
     fluid = atoms[atoms[:, 2] == 2]
@@ -125,6 +154,9 @@ def slide(d, common):
         T.check(f"rigid motion: every particle's shear is 0 ({n} rank(s))",
                 max(per_cell.values()) == 0.0, f"max {max(per_cell.values()):.3g} kPa")
 
+
+def test_slide_shear_rank_independent(slid):
+    d = slid
     # 2. the slide on 1 and 2 ranks
     a, b = dump(f"{d}/slide.1.dump"), dump(f"{d}/slide.2.dump")    # id mol x y z tau txy txz tyz
     dx = abs(a[:, 2:5] - b[:, 2:5]).max()
@@ -139,6 +171,9 @@ def slide(d, common):
     T.check("the slide: every particle's shear the same on 1 and 2 ranks (1e-9 of the largest)",
             dtau <= 1e-9 * tmax, f"{dtau / tmax:.1e}")
 
+
+def test_contacts_count_group_atoms(slid):
+    d = slid
     # 3. compute cell/contacts with a group, at step 0
     tabs = {n: {c: table(f"{d}/{c}.{n}.dat") for c in ("pairs", "p12", "p1", "plo")}
             for n in (1, 2)}
@@ -154,6 +189,7 @@ def slide(d, common):
             str(sorted(t["p12"])))
     T.check("cell/contacts on cell 1 alone: no rows", len(t["p1"]) == 0, str(sorted(t["p1"])))
     # the lamella bonds (between two cells) with both atoms on the low side of the plane
+    atoms = dump(f"{d}/atoms.1.dump")    # id mol type x y z alam
     pos = {int(r[0]): r for r in atoms}
     bonds = dump(f"{d}/bonds.1.dump").astype(int)
     want = {}
@@ -176,7 +212,8 @@ def slide(d, common):
         T.check(f"cell/contacts {c}: 1 and 2 ranks agree (1e-12)", same_rows(tabs[1][c], tabs[2][c]))
 
 
-def debonded(d, common):
+def test_debonded_bonds_counted_in_group(inflated):
+    d, common = inflated
     T.lmp(PULL_IN.replace("{tag}", "pull"), cwd=d, variables=dict(common, **WEAK), log="log.pull")
     t = {c: table(f"{d}/{c}.pull.dat") for c in ("pairs", "p12", "p1", "p3")}
     print("after the pull, debonded bonds per pair:",
@@ -189,27 +226,3 @@ def debonded(d, common):
             str(sorted(t["p12"])))
     T.check("debonded bonds on cell 1 or cell 3 alone: no rows",
             len(t["p1"]) == 0 and len(t["p3"]) == 0, f"{sorted(t['p1'])} {sorted(t['p3'])}")
-
-
-def main():
-    d = T.workdir("shear_cells")
-    # debond logs are appended to: none left from a rerun
-    if os.path.exists(f"{d}/debond.log"):
-        os.remove(f"{d}/debond.log")
-    T.cellgen("tissue", "-o", "three.data", "--lattice", "sc", "--n", 1, 1, 3, "--level", 3,
-              "--nfluid", 440, cwd=d)
-    special = json.load(open(os.path.join(d, "three.json")))["extra_special_per_atom"]
-    common = dict(COARSE, dir=T.INPUTS, Pi=-364.0, Lp=1.0e-9, special=special)
-    # inflated part way (at Lp 10) and settled: the fluid reaches out to its walls, the cells press
-    # on each other
-    T.lmp(f"{T.INPUTS}/in.tissue-inflate", cwd=d,
-          variables=dict(common, Lp=10.0, data="three.data", nsteps=INFLATE, nsettle=SETTLE,
-                         every=500, restart_out="three.restart"),
-          log="log.inflate")
-    slide(d, common)
-    debonded(d, common)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -29,8 +29,8 @@ from cellmech.validation import references as ref  # Eqs. A1, A2, shared with to
 G, T0, A, N = T.STIFF["G"], T.STIFF["t0"], 2.5, 20
 
 
-def main():
-    d = T.workdir("sheet")
+def test_tether_sheet_uniaxial_stretch(rundir):
+    d = rundir
     rows = {}
     for orient in ("x", "y"):
         T.cellgen("sheet", "-o", f"sheet-{orient}.data", "--nx", N, "--ny", N, "--bond", A,
@@ -69,8 +69,3 @@ def main():
     for orient in ("x", "y"):
         T.check(f"{orient}: fixed sides stiffer than free at every stretch",
                 np.all(rows[(orient, "fixed")][1] > rows[(orient, "free")][1]))
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

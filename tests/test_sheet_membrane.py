@@ -34,8 +34,8 @@ G, T0, A, N = T.STIFF["G"], T.STIFF["t0"], 2.5, 10
 LAMS = (1.01, 1.05, 1.1, 1.2, 1.3, 1.4, 1.5)
 
 
-def main():
-    d = T.workdir("sheet_membrane")
+def test_membrane_sheet_neo_hookean(rundir):
+    d = rundir
     print(f"{'bonds':5s} {'sides':5s} {'lam':>5s} {'F/(G t0 W)':>11s} {'NeoH':>8s} {'err':>9s}")
     worst = {}
     for orient in ("x", "y"):
@@ -90,8 +90,3 @@ def main():
         print(f"{name}: rc {rc}, {msg[-1] if msg else 'no error'}")
         T.check(f"bad input ({name}) stops with a message naming -var wall",
                 rc != 0 and any(expect in l for l in msg), msg[-1] if msg else "no error")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -95,19 +95,24 @@ def compare(name, got, ref):
     T.check(f"{name}: forces = a fresh start's (1e-10)", err < TOL, f"{err:.2e}")
 
 
-def main():
-    d = T.workdir("sph-setup")
-    moved = "displace_atoms  fluid random 0.3 0.3 0.3 8123 units box\n"
+MOVED = "displace_atoms  fluid random 0.3 0.3 0.3 8123 units box\n"
+
+
+def test_run0_after_moved_atoms(rundir):
+    d = rundir
     for name, before in (("run 0, atoms moved, run 0", "run 0\n"),
                          ("run 100, atoms moved, run 0", "run 100\n")):
         tag = "r0" if before == "run 0\n" else "r100"
-        T.lmp(BOX + before + moved + "run 0\n" + dump(f"{tag}.dump") +
+        T.lmp(BOX + before + MOVED + "run 0\n" + dump(f"{tag}.dump") +
               f"write_data {tag}.data\n", cwd=d, log=f"log.{tag}")
         compare(name, forces(f"{d}/{tag}.dump"), fresh(d, f"{tag}.data", f"{tag}-fresh.dump"))
 
+
+def test_rerun_frames(rundir):
+    d = rundir
     # rerun: the frames' positions from a dump; velocities are those of the rerun's data
     T.lmp(BOX + "write_data rr0.data\n" + "write_dump all custom frames.dump id x y z modify sort id "
-          "format float %.17g\n" + moved + "write_data rr1.data\nreset_timestep 1\n" +
+          "format float %.17g\n" + MOVED + "write_data rr1.data\nreset_timestep 1\n" +
           "write_dump all custom frames.dump id x y z modify sort id format float %.17g append yes\n",
           cwd=d, log="log.frames")
     T.lmp(BOX + "dump f all custom 1 rerun.dump " + FORCES + "\n"
@@ -118,8 +123,10 @@ def main():
     for k, frame in enumerate(got):
         compare(f"rerun frame {k + 1}", frame, fresh(d, f"rr{k}.data", f"rr{k}-fresh.dump"))
 
+
+def test_cell_between_runs(coarse_cell):
+    d = coarse_cell
     # the whole cell: every style of the model between two runs
-    T.coarse_cell(d)
     for wall in ("tether", "membrane"):
         model = f"""
 variable        dir index {T.INPUTS}
@@ -138,6 +145,9 @@ fix             osmosis fluid cell/fluid Pi 0 Lp 0
         compare(f"the coarse cell, {wall} wall: run 0, atoms moved, run 0",
                 forces(f"{d}/{tag}.dump"), forces(f"{d}/{tag}-fresh.dump"))
 
+
+def test_distance_search_kinds_agree(coarse_cell):
+    d = coarse_cell
     # the two kinds of distance test: the same pairs in the same order
     src = open(T.INPUTS + "/cell-model.lmp").read()
     key = "pair_style      hybrid/overlay cell/sph "
@@ -169,8 +179,3 @@ write_dump      all custom search-{kind}.dump id x y z vx vy vz fx fy fz modify 
     for kind in ("branch", "branchless"):
         T.check(f"pair_style cell/sph search {kind} = search auto, every bit (x, v, f after 300 "
                 "steps)", np.array_equal(runs[kind], runs["auto"]))
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The repository stands alone: nothing it tracks points at files outside it, and it carries its
 license.
@@ -18,7 +17,8 @@ walks the same folders instead.
 import os
 import re
 import subprocess
-import sys
+
+import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FOLDERS = ("src", "docs", "tools", "tests", "lammps-inputs")
@@ -62,11 +62,14 @@ def is_source(f):
             or name.startswith("in."))
 
 
-def main():
-    failures = []
+@pytest.fixture(scope="module")
+def files():
     files, how = tracked_files()
     print(f"{len(files)} files from {how}")
+    return files
 
+
+def test_no_reference_outside_repository(files):
     hits = []
     for f in files:
         path = os.path.join(ROOT, f)
@@ -80,37 +83,41 @@ def main():
     print(f"references to files outside the repository: {len(hits)}")
     for h in hits:
         print("  " + h)
-    if hits:
-        failures.append(f"{len(hits)} references to files outside the repository")
+    assert not hits, f"{len(hits)} references to files outside the repository"
 
+
+def test_model_description_linked():
+    failures = []
     model = os.path.join(ROOT, "docs", "model.md")
-    if not os.path.isfile(model):
-        failures.append("docs/model.md is missing")
-    else:
-        with open(model) as fh:
-            text = fh.read()
-        # the five sections the other files point to by number
-        for sec in ("## 1. Parts", "## 2. Equations", "## 3. Parameters", "## 4. What the paper",
-                    "## 5. Where cellmech differs"):
-            if sec not in text:
-                failures.append(f"docs/model.md has no section '{sec}'")
-        print(f"docs/model.md: {len(text)} characters, {text.count('## ')} headings")
+    assert os.path.isfile(model), "docs/model.md is missing"
+    with open(model) as fh:
+        text = fh.read()
+    # the five sections the other files point to by number
+    for sec in ("## 1. Parts", "## 2. Equations", "## 3. Parameters", "## 4. What the paper",
+                "## 5. Where cellmech differs"):
+        if sec not in text:
+            failures.append(f"docs/model.md has no section '{sec}'")
+    print(f"docs/model.md: {len(text)} characters, {text.count('## ')} headings")
     for f, link in (("README.md", "docs/model.md"), (os.path.join("docs", "index.rst"), "model.md")):
         with open(os.path.join(ROOT, f)) as fh:
             if link not in fh.read():
                 failures.append(f"{f} does not link to {link}")
+    assert not failures, "; ".join(failures)
 
+
+def test_license_gpl2():
     lic = os.path.join(ROOT, "LICENSE")
-    if not os.path.isfile(lic):
-        failures.append("LICENSE is missing")
-    else:
-        with open(lic) as fh:
-            head = fh.read(400)
-        ok = "GNU GENERAL PUBLIC LICENSE" in head and "Version 2, June 1991" in head
-        print(f"LICENSE: {os.path.getsize(lic)} bytes, GNU GPL version 2 text: {ok}")
-        if not ok:
-            failures.append("LICENSE is not the GNU GPL version 2 text")
+    assert os.path.isfile(lic), "LICENSE is missing"
+    with open(lic) as fh:
+        head = fh.read(400)
+    ok = "GNU GENERAL PUBLIC LICENSE" in head and "Version 2, June 1991" in head
+    print(f"LICENSE: {os.path.getsize(lic)} bytes, GNU GPL version 2 text: {ok}")
+    assert ok, "LICENSE is not the GNU GPL version 2 text"
+    with open(os.path.join(ROOT, "README.md")) as fh:
+        assert LICENSE_ID in fh.read(), f"README.md does not name the license {LICENSE_ID}"
 
+
+def test_sources_carry_spdx_line(files):
     sources = [f for f in files if is_source(f) and os.path.isfile(os.path.join(ROOT, f))]
     untagged, other = [], []
     for f in sources:
@@ -126,18 +133,5 @@ def main():
           f"{len(untagged)}, another identifier: {len(other)}")
     for f in untagged + other:
         print("  " + f)
-    if untagged or other:
-        failures.append(f"{len(untagged) + len(other)} source files without the SPDX line of "
-                        f"{LICENSE_ID}")
-    with open(os.path.join(ROOT, "README.md")) as fh:
-        if LICENSE_ID not in fh.read():
-            failures.append(f"README.md does not name the license {LICENSE_ID}")
-
-    for msg in failures:
-        print("FAIL: " + msg)
-    print("standalone: " + ("FAILED" if failures else "ok"))
-    return 1 if failures else 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+    assert not (untagged or other), (f"{len(untagged) + len(other)} source files without the SPDX "
+                                     f"line of {LICENSE_ID}")

@@ -43,8 +43,10 @@ at 1.25% strain (inertia); 86 bonds (1658 um^2) debonded, no tether broken. Abou
 """
 import json
 import os
+from types import SimpleNamespace
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech import quasistatic as Q
@@ -68,8 +70,11 @@ fix             gripmean all ave/time 1 ${{every}} ${{every}} v_Ftop v_Fbot file
 TOL_BALANCE = Q.TOL_BALANCE
 
 
-def main():
-    d = T.workdir("tension")
+@pytest.fixture(scope="module")
+def pulled(rundir):
+    """The block inflated and pulled apart (in.tissue-tension, the short form): its run folder and
+    the pull's log."""
+    d = rundir
     for old in ("debond.log",):
         if os.path.exists(os.path.join(d, old)):
             os.remove(os.path.join(d, old))
@@ -88,11 +93,15 @@ def main():
         fh.write(MOMENTUM.format(top=" ".join(map(str, ids[cz > zmid])), bot=" ".join(map(str, ids[cz < zmid]))))
     _, log = T.lmp(f"{T.INPUTS}/in.tissue-tension", cwd=d, log="log.tension",
                    variables=dict(common, restart="block.restart", **PULL))
-    analyse(d, "tissue-tension", log)
-    T.finish()
+    return d, log
 
 
-def analyse(d, prefix, log, momentum="momentum.dat", gripmean="gripmean.dat"):
+@pytest.fixture(scope="module")
+def records(pulled):
+    """The pull's records: the tension record, the cells' and the pairs' tables, A0, the halves'
+    momentum and the grips' mean forces, and tissuedata.failure() of the record."""
+    d, log = pulled
+    prefix, momentum, gripmean = "tissue-tension", "momentum.dat", "gripmean.dat"
     rec = load(f"{d}/{prefix}.dat", TENSION)
     cells = load_table(f"{d}/{prefix}-cells.dat")
     pairs = load_table(f"{d}/{prefix}-pairs.dat")
@@ -100,23 +109,38 @@ def analyse(d, prefix, log, momentum="momentum.dat", gripmean="gripmean.dat"):
     mom = np.loadtxt(f"{d}/{momentum}", ndmin=2)
     fmean = np.loadtxt(f"{d}/{gripmean}", ndmin=2)
     assert np.array_equal(mom[:, 0], rec["step"]) and np.array_equal(fmean[:, 0], rec["step"][1:])
+    return SimpleNamespace(rec=rec, cells=cells, pairs=pairs, A0=A0, mom=mom, fmean=fmean,
+                           f=failure(rec))
+
+
+@pytest.fixture(scope="module")
+def midplane(records):
+    """The mid-plane load over each interval between records, twice: the top grip's mean force less
+    the top half's momentum change per time, and the bottom grip's plus the bottom half's; their
+    mean, the intervals' strains and the index of the peak."""
+    rec, A0, mom, fmean = records.rec, records.A0, records.mom, records.fmean
     t = rec["time_us"]
-
-    # 1. dynamic, and said so
-    f = failure(rec)
-    bal, en, _, v = Q.check(rec, float(rec["strain"][0]), float(rec["strain"].max()))
-    print(Q.report(bal, en, None, v, "tension, 1 m/s (both grips, 1% start)"))
-    T.check("the 1 m/s pull is called dynamic", not v.quasistatic,
-            f"worst imbalance {v.numbers['balance']:.0%}, KE/W {v.numbers['ke_over_work']:.0%}")
-
-    # 2. the mid-plane load over each interval between records, twice: the top grip's mean force less
-    # the top half's momentum change per time, and the bottom grip's plus the bottom half's
     dt = np.diff(t)
     top = (fmean[:, 1] - np.diff(mom[:, 1]) / dt) / A0
     bot = (fmean[:, 2] + np.diff(mom[:, 2]) / dt) / A0
     mid = 0.5 * (top + bot)
     strain = 0.5 * (rec["strain"][1:] + rec["strain"][:-1])
     k = int(np.argmax(mid))
+    return SimpleNamespace(top=top, bot=bot, mid=mid, strain=strain, k=k)
+
+
+def test_pull_called_dynamic(records):
+    rec = records.rec
+    # 1. dynamic, and said so
+    bal, en, _, v = Q.check(rec, float(rec["strain"][0]), float(rec["strain"].max()))
+    print(Q.report(bal, en, None, v, "tension, 1 m/s (both grips, 1% start)"))
+    T.check("the 1 m/s pull is called dynamic", not v.quasistatic,
+            f"worst imbalance {v.numbers['balance']:.0%}, KE/W {v.numbers['ke_over_work']:.0%}")
+
+
+def test_grips_balance_with_inertia(records, midplane):
+    rec, A0 = records.rec, records.A0
+    top, bot, mid, k = midplane.top, midplane.bot, midplane.mid, midplane.k
     diff = float(np.max(np.abs(top - bot)))
     print("mid-plane load (kPa) every 10th interval: " + " ".join(f"{x:.3g}" for x in mid[::10]))
     T.check(f"the grips balance once the halves' inertia is counted ({TOL_BALANCE:.0%} of the peak load)",
@@ -124,6 +148,11 @@ def analyse(d, prefix, log, momentum="momentum.dat", gripmean="gripmean.dat"):
             f"largest difference {diff:.3g} kPa, peak {mid[k]:.4g} kPa; the grips' raw forces differ by up to "
             f"{np.max(np.abs(rec['F_top_nN'] - rec['F_bottom_nN'])) / A0:.3g} kPa")
 
+
+def test_midplane_load_within_strength_bound(records, midplane):
+    rec, cells, pairs, A0, f = records.rec, records.cells, records.pairs, records.A0, records.f
+    top, bot, mid, strain, k = midplane.top, midplane.bot, midplane.mid, midplane.strain, midplane.k
+    t = rec["time_us"]
     # 3. the strength bound: sigl x the glued area of the pairs straddling the mid-plane, / A0
     cz = cells[0][1][:, PROPS.index("cz")]
     zmid = 0.5 * (cz.min() + cz.max())
@@ -158,7 +187,13 @@ def analyse(d, prefix, log, momentum="momentum.dat", gripmean="gripmean.dat"):
     T.check("at rest, what the lamella's tension across the mid-plane is balanced by pushes (fluid on "
             "the neighbours' walls)", forces[0] - mid[0] > 0,
             f"lamella and contacts {forces[0]:.3g} kPa, mid-plane load {mid[0]:.3g} kPa")
+    print(f"failure stress (top grip, 1% strain window) {f['peak_kPa']:.4g} kPa at strain {f['strain_at_peak']:.4f}; "
+          f"mid-plane load peak {mid[k]:.4g} kPa at strain {strain[k]:.4f}; bound {bound:.4g} kPa")
 
+
+def test_load_rises_and_drops(records, midplane):
+    f = records.f
+    mid, strain, k = midplane.mid, midplane.strain, midplane.k
     # 4. rise and drop
     T.check("the mid-plane load rises to its peak and falls below half of it by the end",
             0 < k < len(mid) - 1 and mid[k] > 0 and mid[-1] < 0.5 * mid[k],
@@ -168,6 +203,9 @@ def analyse(d, prefix, log, momentum="momentum.dat", gripmean="gripmean.dat"):
             0 < kg < len(g) - 1 and g[kg] > 0 and g[kg:].min() < 0.5 * g[kg],
             f"{g[0]:.3g} -> {g[kg]:.4g} kPa at strain {f['strain_at_peak']:.4f} -> min after {g[kg:].min():.3g} kPa")
 
+
+def test_failure_by_debonding(records):
+    rec, pairs, f = records.rec, records.pairs, records.f
     # 5. failure mode, debonded area
     T.check("failure mode: the lamella debonds, no wall ruptures (lamf 0)",
             f["mode"] == "lamella debonding" and f["debonded_bonds"] > 0 and f["broken_tethers"] == 0,
@@ -178,9 +216,3 @@ def analyse(d, prefix, log, momentum="momentum.dat", gripmean="gripmean.dat"):
     scale = max(rec["debonded_area_um2"].max(), 1.0)
     T.check("debonded area: record (cell/props) = cell/contacts at every record (1e-5, the table's digits)",
             worst < 1e-5 * scale, f"{rec['debonded_area_um2'][-1]:.6g} um^2, largest difference {worst:.1e}")
-    print(f"failure stress (top grip, 1% strain window) {f['peak_kPa']:.4g} kPa at strain {f['strain_at_peak']:.4f}; "
-          f"mid-plane load peak {mid[k]:.4g} kPa at strain {strain[k]:.4f}; bound {bound:.4g} kPa")
-
-
-if __name__ == "__main__":
-    main()

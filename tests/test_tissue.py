@@ -24,6 +24,7 @@ import os
 import re
 
 import numpy as np
+import pytest
 
 import lmptest as T
 
@@ -93,7 +94,28 @@ def rel_diff(a, b, scale=None):
     return (np.abs(a - b) / scale).max()
 
 
-def step0(d, common):
+@pytest.fixture(scope="module")
+def inflated(rundir):
+    """Three coarse cells in a row, inflated part way (at Lp 10) and settled: the walls stretched,
+    the lamella loaded, the cells in contact (three.restart). The run folder and the settings of
+    the runs that continue it."""
+    d = rundir
+    # debond logs are appended to (a continued run extends its record): none left from a rerun
+    for old in glob.glob(f"{d}/*.log") + glob.glob(f"{d}/*.vtk"):
+        os.remove(old)
+    T.cellgen("tissue", "-o", "three.data", "--lattice", "sc", "--n", 1, 1, 3, "--level", 3,
+              "--nfluid", 440, cwd=d)
+    special = json.load(open(os.path.join(d, "three.json")))["extra_special_per_atom"]
+    common = dict(COARSE, dir=T.INPUTS, Pi=-364.0, Lp=1.0e-9, special=special)
+    T.lmp(f"{T.INPUTS}/in.tissue-inflate", cwd=d,
+          variables=dict(common, Lp=10.0, data="three.data", nsteps=INFLATE, nsettle=SETTLE, every=500,
+                         restart_out="three.restart"),
+          log="log.inflate")
+    return d, common
+
+
+def test_step0_rank_independent(inflated):
+    d, common = inflated
     res = {}
     for n in (1, 2):
         text = ("processors 1 1 2\n" if n == 2 else "") + CONT + TABLES.format(every=1, tag=f"-{n}") + \
@@ -135,7 +157,8 @@ def parse_rows(log):
     return np.array(rows), tot
 
 
-def restart(d, common):
+def test_restart_continues_run(inflated):
+    d, common = inflated
     pull = dict(common, **WEAK)
     full = CONT + PULL + "timestep 0.001\nrun 150\nwrite_restart half.restart\nrun 150\n" + \
         DUMP.format(name="full.dump") + DEBOND_ROWS
@@ -166,7 +189,8 @@ def restart(d, common):
             open(f"{d}/full.log").read() == open(f"{d}/cont.log").read())
 
 
-def consistent(d, common):
+def test_failures_counted_alike(inflated):
+    d, common = inflated
     """Each kind of failure counted alike by every output, the other kind zero."""
     runs = {}
     # rupture: the column struck and pressed 8% at 4 m/s (the top plate at full speed from the
@@ -224,7 +248,8 @@ def consistent(d, common):
                     abs(area[2] - area[0]) < 1e-6 * area[0], f"{area[0]:.8g}")
 
 
-def balanced(d, common):
+def test_load_balance(inflated):
+    d, common = inflated
     """Load balancing (tissue-model.lmp's -var balance): three cells in an L (a 2 x 1 x 2 block less
     one corner) on 2 ranks split along x. LAMMPS's even split gives one rank two cells and the other
     one; balance and fix balance (shift xyz) move the cut so that both hold the same within 10%,
@@ -259,7 +284,8 @@ def balanced(d, common):
             f"{dx_bal:.1e}")
 
 
-def bad_inputs(d, common):
+def test_bad_inputs_refused(inflated):
+    d, common = inflated
     cases = [
         (CONT + "compute c all cell/contacts 2.0\nrun 0\n", common,
          r"Illegal compute cell/contacts command: expected no arguments after the style, got 1"),
@@ -285,30 +311,3 @@ run 0
         err = re.search(r"ERROR.*", log)
         T.check(f"bad input {k + 1}: clear error", rc != 0 and err is not None and
                 re.search(pattern, log) is not None, err.group(0)[:160] if err else "no error")
-
-
-def main():
-    d = T.workdir("tissue")
-    # debond logs are appended to (a continued run extends its record): none left from a rerun
-    for old in glob.glob(f"{d}/*.log") + glob.glob(f"{d}/*.vtk"):
-        os.remove(old)
-    T.cellgen("tissue", "-o", "three.data", "--lattice", "sc", "--n", 1, 1, 3, "--level", 3,
-              "--nfluid", 440, cwd=d)
-    special = json.load(open(os.path.join(d, "three.json")))["extra_special_per_atom"]
-    common = dict(COARSE, dir=T.INPUTS, Pi=-364.0, Lp=1.0e-9, special=special)
-    # inflated part way (at Lp 10) and settled: the walls stretched, the lamella loaded, the
-    # cells in contact
-    T.lmp(f"{T.INPUTS}/in.tissue-inflate", cwd=d,
-          variables=dict(common, Lp=10.0, data="three.data", nsteps=INFLATE, nsettle=SETTLE, every=500,
-                         restart_out="three.restart"),
-          log="log.inflate")
-    step0(d, common)
-    restart(d, common)
-    consistent(d, common)
-    balanced(d, common)
-    bad_inputs(d, common)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -27,6 +27,7 @@ About 20 s on one core.
 import os
 
 import numpy as np
+import pytest
 
 import lmptest as T
 
@@ -44,17 +45,26 @@ run             ${free}
 """
 
 
-def main():
-    d = T.workdir("tissue_rest")
+@pytest.fixture(scope="module")
+def inflated(rundir):
+    """The pair of cells inflated (in.tissue-inflate): its record."""
     T.cellgen("tissue", "-o", "pair.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
-              "--nfluid", 440, cwd=d)
-    T.lmp(f"{T.INPUTS}/in.tissue-inflate", cwd=d, log="log.inflate", variables=dict(
+              "--nfluid", 440, cwd=rundir)
+    T.lmp(f"{T.INPUTS}/in.tissue-inflate", cwd=rundir, log="log.inflate", variables=dict(
         dir=T.INPUTS, data="pair.data", Pi=PI, every=1000, restart_out="pair.restart"))
-    rec = np.loadtxt(os.path.join(d, "tissue-inflate.dat"))
+    return np.loadtxt(os.path.join(rundir, "tissue-inflate.dat"))
+
+
+def test_inflation_keeps_lamella(inflated):
+    rec = inflated
     # columns: step t V M Pm Pmin Pmax lam nlam glued broken debonded
     glued0, glued, debonded = rec[0, 9], rec[-1, 9], rec[-1, 11]
     T.check("the inflation debonds no lamella bond", debonded == 0 and glued == glued0,
             f"{debonded:.0f} debonded, glued {glued:.1f} of the generator's {glued0:.1f} um^2")
+
+
+def test_inflated_tissue_at_rest(rundir, inflated):
+    d = rundir
     T.lmp(FREE_RUN, cwd=d, log="log.free", variables=dict(dir=T.INPUTS, Pi=PI, Lp=1.0e-9, mu=1.0, free=FREE))
     free = np.loadtxt(os.path.join(d, "free.dat"))
     p, vrms = free[:, 1], free[:, 2]
@@ -64,8 +74,3 @@ def main():
     T.check(f"left alone, its motion does not grow (rms speed < {VMAX} m/s)", vrms.max() < VMAX,
             f"largest {vrms.max():.3g} m/s")
     T.check("its turgor stays within 1% of the inflation's", drift < 0.01, f"{drift:.2%}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

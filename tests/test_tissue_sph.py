@@ -57,7 +57,7 @@ def read_dump(path):
     return np.array([[float(v) for v in l.split()] for l in lines[start + 1:] if l.strip()])
 
 
-def pair_check():
+def test_no_sph_between_cells():
     d = T.workdir("tissue-sph-pair")
     out = {}
     for m2 in (1, 2):
@@ -113,7 +113,7 @@ run             {nsteps}
 PI = (-364.0, -100.0)
 
 
-def two_cells():
+def test_no_mass_between_cells():
     d = T.workdir("tissue-sph-two")
     T.cellgen("tissue", "-o", "two.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
               "--nfluid", 440, cwd=d)
@@ -152,13 +152,3 @@ def two_cells():
         T.check(f"cell {c + 1} settles at its own turgor -Pi = {-PI[c]} kPa (2%)", rel < 0.02,
                 f"P = {p:.2f} kPa, {100 * rel:.2f}%")
     print(T.performance(open(os.path.join(d, "log.two")).read()))
-
-
-def main():
-    pair_check()
-    two_cells()
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -29,8 +29,8 @@ run             50
 """
 
 
-def main():
-    d = T.workdir("virial")
+def test_per_atom_virial_sums_to_global(rundir):
+    d = rundir
     T.coarse_cell(d)
     prints = "\n".join(
         f'print "{part}{k} $(c_r{part[0]}[{k}]:%.15g) $(-c_p{part[0]}[{k}]*v_V:%.15g)"'
@@ -48,8 +48,3 @@ def main():
                   + ", ".join(f"{a:.6g}/{b:.6g}" for a, b in rows) + f"; max rel diff {err:.1e}")
             T.check(f"{n} rank(s): per-atom {part} virial sums to the global one", err < 1e-10,
                     f"{err:.1e}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

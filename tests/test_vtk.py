@@ -16,8 +16,8 @@ import lmptest as T
 LAM, R = 1.01, 30.0
 
 
-def main():
-    d = T.workdir("vtk")
+def test_vtk_surface_of_stretched_wall(rundir):
+    d = rundir
     T.cellgen("cell", "-o", "wall.data", "--level", 3, "--nfluid", 0, cwd=d)
     for n in (1, 2):
         T.lmp(f"include {T.INPUTS}/in.breathing\nfix surf all cell/vtk 100 walls{n}\nrun 0\n", cwd=d,
@@ -61,8 +61,3 @@ def main():
         centres.Update()
         cpos = vtk_to_numpy(centres.GetOutput().GetPoints().GetData())
         T.check(f"{n}: triangle normals point outward", np.all(np.einsum("ij,ij->i", nrm, cpos) > 0))
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -31,8 +31,10 @@ tests/unit/physics/test_bending.cpp (BendingHinge).
 """
 import math
 import os
+from types import SimpleNamespace
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech.cellgen.datafile import read_data, write
@@ -66,7 +68,7 @@ variable        fmax equal c_fmax
 """
 
 
-def setup(data, G=G, t0=T0, cut=20.0, dt=0.001):
+def wall_input(data, G=G, t0=T0, cut=20.0, dt=0.001):
     # a tissue's data file also holds the lamella areas and needs room for more special neighbours
     tissue = data.startswith("tissue")
     return SETUP.format(data=data, G=G, t0=t0, cut=cut, dt=dt, alam=" d_alam" if tissue else "",
@@ -77,13 +79,14 @@ def last(log, tag):
     return [l for l in log.splitlines() if l.startswith(tag)][-1].split()
 
 
-def at_rest(d):
+def test_walls_at_rest_store_no_energy(rundir):
+    d = rundir
     T.cellgen("cell", "-o", "cell3.data", "--level", 3, "--nfluid", 0, "--bending", cwd=d)
     T.cellgen("tissue", "-o", "tissue.data", "--lattice", "sc", "--n", 2, 1, 1, "--level", 2,
               "--nfluid", 4, "--bending", cwd=d)
     for data, cut in (("cell3.data", 20.0), ("tissue.data", 40.0)):
         for lam in (1.0, 0.9):
-            inp = setup(data, cut=cut) + f"""
+            inp = wall_input(data, cut=cut) + f"""
 variable        sx atom {lam}*x
 variable        sy atom {lam}*y
 variable        sz atom {lam}*z
@@ -102,7 +105,8 @@ print           "REST $(edihed:%.17g) $(v_fmax:%.17g) $(dihedrals)"
             T.check(f"{data} x {lam}: no force at rest", fmax < 1e-9 * D, f"{fmax:.3g}")
 
 
-def cylinder(d):
+def test_cylinder_bending_energy(rundir):
+    d = rundir
     R, n = 20.0, 9
     centre = (n // 2) * (n + 1)    # node (4, 4) of the 9x9 sheet, 1-based id below
     err = {}
@@ -114,7 +118,7 @@ def cylinder(d):
             # bend the coordinate u (x or y) onto the cylinder of radius R about an axis through
             # the centre node, keeping arc lengths: u -> uc + R sin(s/R), z -> R (1 - cos(s/R))
             u = "x" if axis == "y" else "y"
-            inp = setup(data, cut=4.0 * a) + f"""
+            inp = wall_input(data, cut=4.0 * a) + f"""
 variable        uc equal {u}[{node}]
 variable        su atom v_uc+{R}*sin(({u}-v_uc)/{R})
 variable        sz atom {R}*(1-cos(({u}-v_uc)/{R}))
@@ -157,12 +161,19 @@ print           "CYL $(edihed:%.17g) $(v_e1:%.17g) $(v_xf:%.17g) $(v_dvir:%.17g)
                 f"{e[2]:.3e} vs {predicted:.3e}")
 
 
-def dynamics(d):
-    T.cellgen("cell", "-o", "cell2.data", "--level", 2, "--nfluid", 0, "--bending", cwd=d)
+@pytest.fixture(scope="module")
+def cell2(rundir):
+    """The level-2 wall with hinges (cell2.data)."""
+    T.cellgen("cell", "-o", "cell2.data", "--level", 2, "--nfluid", 0, "--bending", cwd=rundir)
+    return rundir
+
+
+def test_nve_restart_and_ranks(cell2):
+    d = cell2
     # a stiff plate (t0 = 1 um) so that the hinges alone oscillate within the run
     drift, swing = {}, {}
     for dt, nsteps in ((0.004, 1000), (0.002, 2000)):
-        inp = setup("cell2.data", t0=1.0, dt=dt) + f"""
+        inp = wall_input("cell2.data", t0=1.0, dt=dt) + f"""
 displace_atoms  all random 0.3 0.3 0.3 8123 units box
 fix             nve all nve
 variable        etot equal ke+edihed
@@ -187,7 +198,7 @@ run             {nsteps}
     T.check("nve conserves the bent wall's energy", drift[0.004] < 1e-2, f"{drift[0.004]:.1e}")
     T.check("the energy error is second order in dt", 3.0 < ratio < 5.0, f"{ratio:.2f}")
 
-    run = setup("cell2.data", t0=1.0, dt=0.004) + """
+    run = wall_input("cell2.data", t0=1.0, dt=0.004) + """
 displace_atoms  all random 0.3 0.3 0.3 8123 units box
 fix             nve all nve
 run             300
@@ -221,8 +232,9 @@ write_dump      all custom restart.dump id x y z vx vy vz modify sort id format 
     T.check("a restart continues the run", dre < 1e-9, f"{dre:.1e}")
 
 
-def bad_input(d):
-    base = setup("cell2.data")
+def test_bad_input_refused(cell2):
+    d = cell2
+    base = wall_input("cell2.data")
     # the first hinge i-j-k-l of the data file, its node i moved onto the middle of its edge j-k
     i, j, k = [int(v) for v in read_data(os.path.join(d, "cell2.data")).rows("Dihedrals")[0][2:5]]
     collapse = (f"set atom {i} x $((x[{j}]+x[{k}])/2) y $((y[{j}]+y[{k}])/2) "
@@ -252,11 +264,12 @@ def read_topology(path):
                   for k in ("Angles", "Bonds", "Dihedrals"))
 
 
-def hinges_follow_failure(d):
-    """A hinge whose wing triangle leaves the wall (broken tether, failed membrane triangle) leaves
-    with it: arrays, count, and the neighbour lists from the build of the next step (its energy is
-    gone from then on; in the step of the failure it still bends), on 1 and 2 ranks and through a
-    restart."""
+@pytest.fixture(scope="module")
+def hinged(rundir):
+    """The coarse wall with hinges (cellb.data) stretched 1.06 in x against lamf 1.03: its hinges,
+    the triangles each wall model loses, the input with the wall's styles left open ({styles}) and
+    the stretch."""
+    d = rundir
     T.cellgen("cell", "-o", "cellb.data", "--level", 3, "--nfluid", 0, "--bending", cwd=d)
     ref, tri, bonds, hinges = read_topology(os.path.join(d, "cellb.data"))
     centre = np.mean(np.array(list(ref.values())), axis=0)
@@ -281,27 +294,39 @@ def hinges_follow_failure(d):
                            f"angle_coeff     1 {G} {T0} 0.0 {{lamf}}"),
               "tether": (f"bond_style      cell/tether\nbond_coeff      1 {G} {T0} 0.0 {{lamf}}\n"
                          f"angle_style     zero nocoeff\nangle_coeff     *")}
-    base = setup("{data}").replace("bond_style      zero\nbond_coeff      *\nangle_style     zero\n"
+    base = wall_input("{data}").replace("bond_style      zero\nbond_coeff      *\nangle_style     zero\n"
                                    "angle_coeff     *", "{styles}")
     deform = "".join(f"variable s{x} atom ({c})+{f}*({x}-({c}))\n"
                      for x, c, f in zip("xyz", centre, scale)) + "set group all x v_sx y v_sy z v_sz\n"
-    for wall in ("membrane", "tether"):
-        keep = [h for h in hinges if key(*h[:3]) not in gone[wall] and key(*h[1:]) not in gone[wall]]
-        # the energy of exactly the hinges that should be left, at the same positions: a data file
-        # with only those, and no failure
-        data = read_data(os.path.join(d, "cellb.data"))
-        data.counts["dihedrals"] = len(keep)
-        data.sections["Dihedrals"] = [[n + 1, 1, *h] for n, h in enumerate(keep)]
-        write(os.path.join(d, "keep.data"), data)
-        _, log = T.lmp(base.format(data="keep.data", styles=styles[wall].format(lamf="")) + deform +
-                       'run 0\nprint "EB $(edihed:%.17g) $(dihedrals)"\n', cwd=d, log=f"log.keep-{wall}")
-        eb_expect = float(last(log, "EB")[1])
-        _, log = T.lmp(base.format(data="cellb.data", styles=styles[wall].format(lamf="")) + deform +
-                       'run 0\nprint "EB $(edihed:%.17g) $(dihedrals)"\n', cwd=d, log=f"log.all-{wall}")
-        eb_all = float(last(log, "EB")[1])
-        counts = {}
-        for np_ in (1, 2):
-            inp = base.format(data="cellb.data", styles=styles[wall].format(lamf=f"lamf {lamf}")) + deform + f"""
+    return SimpleNamespace(hinges=hinges, gone=gone, styles=styles, base=base, deform=deform, lamf=lamf,
+                           key=key)
+
+
+def hinge_energies(d, hg, wall):
+    """The hinges that should be left (both wings intact); the bending energy of exactly those at
+    the stretched positions (a data file with only them, keep.data, and no failure), and of all."""
+    hinges, gone, key, base, styles, deform = hg.hinges, hg.gone, hg.key, hg.base, hg.styles, hg.deform
+    keep = [h for h in hinges if key(*h[:3]) not in gone[wall] and key(*h[1:]) not in gone[wall]]
+    # the energy of exactly the hinges that should be left, at the same positions: a data file
+    # with only those, and no failure
+    data = read_data(os.path.join(d, "cellb.data"))
+    data.counts["dihedrals"] = len(keep)
+    data.sections["Dihedrals"] = [[n + 1, 1, *h] for n, h in enumerate(keep)]
+    write(os.path.join(d, "keep.data"), data)
+    _, log = T.lmp(base.format(data="keep.data", styles=styles[wall].format(lamf="")) + deform +
+                   'run 0\nprint "EB $(edihed:%.17g) $(dihedrals)"\n', cwd=d, log=f"log.keep-{wall}")
+    eb_expect = float(last(log, "EB")[1])
+    _, log = T.lmp(base.format(data="cellb.data", styles=styles[wall].format(lamf="")) + deform +
+                   'run 0\nprint "EB $(edihed:%.17g) $(dihedrals)"\n', cwd=d, log=f"log.all-{wall}")
+    eb_all = float(last(log, "EB")[1])
+    return keep, eb_expect, eb_all
+
+
+def fail_and_restart(d, hg, wall, np_):
+    """The stretched wall with failure on np_ ranks, run 0 twice (the step of the failure and the
+    next build), written to a data file and a restart and continued: the energies and counts."""
+    base, styles, deform, lamf = hg.base, hg.styles, hg.deform, hg.lamf
+    inp = base.format(data="cellb.data", styles=styles[wall].format(lamf=f"lamf {lamf}")) + deform + f"""
 thermo_style    custom step edihed dihedrals angles bonds
 thermo_modify   format float %.17g
 run             0
@@ -311,11 +336,11 @@ print           "NEXT $(edihed:%.17g)"
 write_data      after{np_}.data nocoeff
 write_restart   after{np_}.restart
 """
-            _, log = T.lmp(inp, cwd=d, nprocs=np_, log=f"log.hinges-{wall}{np_}")
-            eb_fail, nd, na, nb = (float(v) for v in last(log, "FAIL")[1:5])
-            eb = float(last(log, "NEXT")[1])
-            left = sorted(read_topology(os.path.join(d, f"after{np_}.data"))[3])
-            cont = f"""
+    _, log = T.lmp(inp, cwd=d, nprocs=np_, log=f"log.hinges-{wall}{np_}")
+    eb_fail, nd, na, nb = (float(v) for v in last(log, "FAIL")[1:5])
+    eb = float(last(log, "NEXT")[1])
+    left = sorted(read_topology(os.path.join(d, f"after{np_}.data"))[3])
+    cont = f"""
 units           micro
 read_restart    after{np_}.restart
 fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
@@ -324,36 +349,36 @@ pair_coeff      * *
 run             0
 print           "CONT $(edihed:%.17g) $(dihedrals)"
 """
-            _, log = T.lmp(cont, cwd=d, nprocs=np_, log=f"log.hinges-{wall}{np_}-cont")
-            ebc, ndc = (float(v) for v in last(log, "CONT")[1:3])
-            counts[np_] = (nd, na, nb, eb)
-            print(f"{wall} wall, {np_} rank(s), lamf {lamf}, stretch 1.06 in x: {len(gone[wall])} "
-                  f"triangles gone, hinges {len(hinges)} -> {nd:.0f} (expected {len(keep)}), "
-                  f"after restart {ndc:.0f}; E_bend in the step of the failure {eb_fail:.10g} (all "
-                  f"hinges {eb_all:.10g}), from the next build {eb:.10g}, restarted {ebc:.10g}, of "
-                  f"the expected hinges alone {eb_expect:.10g} (rel. diff {abs(eb / eb_expect - 1):.1e})")
-            T.check(f"{wall}/{np_}: some hinges leave, not all", 0 < len(keep) < len(hinges))
-            T.check(f"{wall}/{np_}: hinge count and the data file's hinges are those with both "
-                    f"wings intact", nd == len(keep) and left == sorted(keep), f"{nd:.0f}")
-            T.check(f"{wall}/{np_}: in the step of the failure every hinge still bends (1e-12)",
-                    abs(eb_fail / eb_all - 1) < 1e-12, f"{abs(eb_fail / eb_all - 1):.1e}")
-            T.check(f"{wall}/{np_}: the hinges of torn triangles bend nothing from the next "
-                    f"neighbour build on (1e-12)", abs(eb / eb_expect - 1) < 1e-12,
-                    f"{abs(eb / eb_expect - 1):.1e}")
-            T.check(f"{wall}/{np_}: the restart keeps them out", ndc == len(keep) and
-                    abs(ebc / eb_expect - 1) < 1e-12, f"{ndc:.0f}")
-        T.check(f"{wall}: 1 and 2 ranks agree", counts[1][:3] == counts[2][:3], str(counts))
+    _, log = T.lmp(cont, cwd=d, nprocs=np_, log=f"log.hinges-{wall}{np_}-cont")
+    ebc, ndc = (float(v) for v in last(log, "CONT")[1:3])
+    return eb_fail, nd, na, nb, eb, left, ebc, ndc
 
 
-def main():
-    d = T.workdir("wall_bending")
-    hinges_follow_failure(d)
-    at_rest(d)
-    cylinder(d)
-    dynamics(d)
-    bad_input(d)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()
+@pytest.mark.parametrize("wall", ("membrane", "tether"))
+def test_hinges_follow_failure(rundir, hinged, wall):
+    """A hinge whose wing triangle leaves the wall (broken tether, failed membrane triangle) leaves
+    with it: arrays, count, and the neighbour lists from the build of the next step (its energy is
+    gone from then on; in the step of the failure it still bends), on 1 and 2 ranks and through a
+    restart."""
+    d, hinges, gone, lamf = rundir, hinged.hinges, hinged.gone, hinged.lamf
+    keep, eb_expect, eb_all = hinge_energies(d, hinged, wall)
+    counts = {}
+    for np_ in (1, 2):
+        eb_fail, nd, na, nb, eb, left, ebc, ndc = fail_and_restart(d, hinged, wall, np_)
+        counts[np_] = (nd, na, nb, eb)
+        print(f"{wall} wall, {np_} rank(s), lamf {lamf}, stretch 1.06 in x: {len(gone[wall])} "
+              f"triangles gone, hinges {len(hinges)} -> {nd:.0f} (expected {len(keep)}), "
+              f"after restart {ndc:.0f}; E_bend in the step of the failure {eb_fail:.10g} (all "
+              f"hinges {eb_all:.10g}), from the next build {eb:.10g}, restarted {ebc:.10g}, of "
+              f"the expected hinges alone {eb_expect:.10g} (rel. diff {abs(eb / eb_expect - 1):.1e})")
+        T.check(f"{wall}/{np_}: some hinges leave, not all", 0 < len(keep) < len(hinges))
+        T.check(f"{wall}/{np_}: hinge count and the data file's hinges are those with both "
+                f"wings intact", nd == len(keep) and left == sorted(keep), f"{nd:.0f}")
+        T.check(f"{wall}/{np_}: in the step of the failure every hinge still bends (1e-12)",
+                abs(eb_fail / eb_all - 1) < 1e-12, f"{abs(eb_fail / eb_all - 1):.1e}")
+        T.check(f"{wall}/{np_}: the hinges of torn triangles bend nothing from the next "
+                f"neighbour build on (1e-12)", abs(eb / eb_expect - 1) < 1e-12,
+                f"{abs(eb / eb_expect - 1):.1e}")
+        T.check(f"{wall}/{np_}: the restart keeps them out", ndc == len(keep) and
+                abs(ebc / eb_expect - 1) < 1e-12, f"{ndc:.0f}")
+    T.check(f"{wall}: 1 and 2 ranks agree", counts[1][:3] == counts[2][:3], str(counts))

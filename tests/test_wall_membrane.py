@@ -27,6 +27,7 @@ import math
 import os
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech.cellgen.datafile import read_data
@@ -121,13 +122,23 @@ print           "SCALED $(eangle:%.17g) $(v_xf:%.17g)"
     return float(line[1]), float(line[2])
 
 
-def main():
-    d = T.workdir("wall_membrane")
+@pytest.fixture(scope="module")
+def wall(rundir):
+    """The coarse wall alone (cell.data) and its reference area."""
+    d = rundir
     T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 0, cwd=d)
     A0, ntri = reference_area(os.path.join(d, "cell.data"))
     print(f"level-3 wall: {ntri} triangles, reference area {A0:.6f} um^2")
+    return d, A0, ntri
+
+
+def test_level3_wall(wall):
+    ntri = wall[2]
     T.check("the data file holds the 1280 triangles of a level-3 wall", ntri == 1280, ntri)
 
+
+def test_uniform_scaling(wall):
+    d, A0, _ = wall
     # 1. uniform scaling: energy and virial against the closed form
     for lam in (0.95, 1.02, 1.1):
         E, xf = scaled(SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001), lam, lam, lam, d,
@@ -140,6 +151,9 @@ def main():
         T.check(f"lam {lam}: energy of the equibiaxially stretched wall", eE < 1e-10, f"{eE:.1e}")
         T.check(f"lam {lam}: virial of the equibiaxially stretched wall", ex < 1e-10, f"{ex:.1e}")
 
+
+def test_nve_energy_second_order(wall):
+    d = wall[0]
     # 2. energy conservation with nve, at dt and dt/2
     drift = {}
     for dt, nsteps in ((0.0005, 2000), (0.00025, 4000)):
@@ -168,6 +182,9 @@ run             {nsteps}
     T.check("nve conserves the membrane wall's energy", drift[0.0005] < 1e-3, f"{drift[0.0005]:.1e}")
     T.check("the energy error is second order in dt", 3.0 < ratio < 5.0, f"{ratio:.2f}")
 
+
+def test_ranks_and_restart(wall):
+    d = wall[0]
     # 3. one rank against two, and a restart in the middle
     run = SETUP.format(G=G, t0=T0, gamma=0.1, dt=0.0005) + """
 displace_atoms  all random 0.05 0.05 0.05 8123 units box
@@ -201,6 +218,9 @@ write_dump      all custom restart.dump id x y z vx vy vz modify sort id format 
     T.check("1 and 2 ranks give the same wall", d12 < 1e-9, f"{d12:.1e}")
     T.check("a restart continues the run", dre < 1e-9, f"{dre:.1e}")
 
+
+def test_bad_input_refused(wall):
+    d = wall[0]
     # 4. bad input
     bad = {
         "wrinkle not yes or no": (SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
@@ -221,8 +241,12 @@ write_dump      all custom restart.dump id x y z vx vy vz modify sort id format 
         T.check(f"bad input ({name}) is refused with a clear error",
                 rc != 0 and any(expect in l for l in msg), msg[-1] if msg else "no error")
 
-    # 5. tension-field theory
-    ref, tri = wall_triangles(os.path.join(d, "cell.data"))
+
+@pytest.fixture(scope="module")
+def wrinkled(wall):
+    """5. tension-field theory: the wall scaled (1.08, 1, 0.93) with wrinkle yes, written to a dump,
+    a data file and a restart; its energy."""
+    d = wall[0]
     wr = SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
         f"angle_coeff     1 {G} {T0} 0.0", f"angle_coeff     1 {G} {T0} 0.0 wrinkle yes")
     E, _ = scaled(wr, 1.08, 1.0, 0.93, d, "wrinkle-aniso", """
@@ -230,6 +254,13 @@ write_dump      all custom wrinkled.dump id x y z modify sort id format float %.
 write_data      wrinkled.data
 write_restart   wrinkled.restart
 """)
+    return wr, E
+
+
+def test_tension_field_energy(wall, wrinkled):
+    d = wall[0]
+    wr, E = wrinkled
+    ref, tri = wall_triangles(os.path.join(d, "cell.data"))
     Efull, _ = scaled(SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001), 1.08, 1.0, 0.93, d,
                       "full-aniso")
     dmp = np.loadtxt(os.path.join(d, "wrinkled.dump"), skiprows=9)
@@ -250,6 +281,11 @@ write_restart   wrinkled.restart
     coeffs = " ".join(read_data(os.path.join(d, "wrinkled.data")).rows("Angle Coeffs")[0])
     print(f"write_data Angle Coeffs: {coeffs}")
     T.check("write_data keeps wrinkle yes", coeffs.endswith("wrinkle yes"), coeffs)
+
+
+def test_tension_field_wall_read_back(wall, wrinkled):
+    d = wall[0]
+    _, E = wrinkled
     back = {}
     for how, head in (("data", """
 units           micro
@@ -279,8 +315,3 @@ print           "BACK $(eangle:%.17g)"
         print(f"read back from the {how} file: energy {back[how]:.10g}")
         T.check(f"the {how} file keeps the tension-field wall", abs(back[how] / E - 1) < 1e-12,
                 f"{back[how]:.10g} vs {E:.10g}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -14,7 +14,7 @@ cells (cellgen.py tissue 1x1x2, level 3, 440 fluid particles each), short runs.
 4. Drying at a set flux q through the exposed wall only: each cell loses q dt times the sum of its
    exposed area over the steps (to round-off); with exchange yes and exposed unglued the glued face
    (as compute cell/props measures it) is not exposed, without exchange the whole wall is (the
-   default, exposed outside, in test_tissue_water_probe.py).
+   default, exposed outside, in test_tissue_water.py).
 5. Bad inputs end with a clear error naming the keyword.
 """
 import json
@@ -22,6 +22,7 @@ import os
 import struct
 
 import numpy as np
+import pytest
 
 import lmptest as T
 
@@ -91,7 +92,17 @@ def run(d, special, opts, nsteps, every, tag, nprocs=1, pre="", variables=None, 
     return table(d, f"{tag}.dat")
 
 
-def exchange_balance(d, special):
+@pytest.fixture(scope="module")
+def two(rundir):
+    """Two coarse cells glued face to face (cellgen.py tissue): the run folder and the data's
+    extra special neighbours."""
+    T.cellgen("tissue", "-o", "two.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
+              "--nfluid", 440, cwd=rundir)
+    return rundir, json.load(open(os.path.join(rundir, "two.json")))["extra_special_per_atom"]
+
+
+def test_exchange_balance(two):
+    d, special = two
     step, r = run(d, special, EXCHANGE, 1000, 100, "balance")
     M = r["M1"] + r["M2"]
     drift = np.abs(M - M[0]).max() / M[0]
@@ -117,10 +128,10 @@ def exchange_balance(d, special):
     gap0, gap1 = r["S2"][0] - r["S1"][0], r["S2"][-1] - r["S1"][-1]
     T.check("exchange: the gap of the water potentials closes", abs(gap1) < 0.5 * abs(gap0),
             f"{gap0:.2f} -> {gap1:.2f} kPa")
-    return step, r
 
 
-def mpi_restart(d, special):
+def test_restart_across_ranks(two):
+    d, special = two
     opts = EXCHANGE + " solute yes"
     n = 600
     step, one = run(d, special, opts, n, 100, "sol1")
@@ -166,7 +177,8 @@ def mpi_restart(d, special):
             f"W0 {b['Z1'][0]:.10g} vs {one['Z1'][0]:.10g}")
 
 
-def old_restart(d, special):
+def test_old_restart_read(two):
+    d, special = two
     """A restart record of fix cell/fluid in a format before RESTART_TAG (no release wrote one;
     development versions opened it with -ncells) is refused by name, not read as garbage."""
     data = open(os.path.join(d, "sol.restart"), "rb").read()
@@ -182,7 +194,8 @@ def old_restart(d, special):
             rc != 0 and err and "Fix cell/fluid w" in err[0] and "older format" in err[0])
 
 
-def no_exchange(d, special):
+def test_no_exchange(two):
+    d, special = two
     # not shared: the lamella bonds (type 2) deleted, the cells still side by side
     _, r = run(d, special, EXCHANGE + " exposed unglued", 300, 100, "unglued",
                pre="delete_bonds all bond 2 remove special")
@@ -208,7 +221,8 @@ def no_exchange(d, special):
                 after == 0.0 and r["U1"][k] > 0.0, f"{after:.3g}")
 
 
-def drying(d, special):
+def test_drying(two):
+    d, special = two
     q, n = 2e-4, 400    # pg/(um^2 us): about 1% of the water in 0.4 us
     res = {}
     for ex in ("yes", "no"):
@@ -258,7 +272,8 @@ BAD = [
 ]
 
 
-def bad_inputs(d, special):
+def test_bad_inputs_refused(two):
+    d, special = two
     with open(os.path.join(d, "bad.txt"), "w") as f:
         f.write("# M Pi Lp\n1 -364 10 extra\n")
     for opts, expect in BAD:
@@ -276,21 +291,3 @@ def bad_inputs(d, special):
     err = [l for l in log.splitlines() if "ERROR" in l]
     print(f"exchange without d_alam: rc {rc}: {err[0] if err else 'no error'}")
     T.check("exchange yes without d_alam refused", rc != 0 and err and "missing: d_alam" in err[0])
-
-
-def main():
-    d = T.workdir("water")
-    T.cellgen("tissue", "-o", "two.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
-              "--nfluid", 440, cwd=d)
-    special = json.load(open(os.path.join(d, "two.json")))["extra_special_per_atom"]
-    exchange_balance(d, special)
-    mpi_restart(d, special)
-    old_restart(d, special)
-    no_exchange(d, special)
-    drying(d, special)
-    bad_inputs(d, special)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

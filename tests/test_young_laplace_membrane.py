@@ -91,8 +91,8 @@ def wall_geometry(path):
     return pos, centre, share, V0, A0, mass
 
 
-def main():
-    d = T.workdir("young_laplace_membrane")
+def test_membrane_wall_matches_young_laplace(rundir):
+    d = rundir
     T.cellgen("cell", "-o", "wall.data", "--level", 3, "--nfluid", 0, cwd=d)
     pos, centre, share, V0, A0, mass = wall_geometry(os.path.join(d, "wall.data"))
     R = 3 * V0 / A0
@@ -123,8 +123,3 @@ def main():
                 f"{change:.1e}")
         T.check(f"P {P:g}: membrane wall's strain within 1% of Young-Laplace", abs(err) < 0.01,
                 f"{err:+.2e}")
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

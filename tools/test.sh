@@ -3,6 +3,8 @@
 # Set up (or reuse) everything and run the whole test suite with CTest against the default LAMMPS
 # release (tools/setup.sh), then the unit tests and short cell runs against the other release the
 # package supports, built beside it (build-VERSION/). OTHER_LAMMPS=0 skips the second part.
+# Arguments go to the first ctest: -L fast (or unit, slow) runs one label of tests/CMakeLists.txt;
+# the second part runs the tests labelled compat.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$here/tools/setup.sh"
@@ -14,5 +16,5 @@ if [ "${OTHER_LAMMPS:-1}" = 1 ]; then
   echo "== the other supported LAMMPS release: $other (unit tests, plugin guard, LAMMPS's force-style harness, short runs of every example, pair cell/sph between runs, fix cell/plates on its fix wall, failures without a per-step collective)"
   LAMMPS_VERSION=$other CELLMECH_BUILD_DIR=build-$other bash "$here/tools/setup.sh"
   (cd "$here/build-$other" && ctest --output-on-failure -j "${JOBS:-$(nproc)}" \
-    -R '^(physics|styles|plugin_guard|examples|cell_mpi_restart|probe|sph_setup|cell_plates|collectives|force_.*)$')
+    -L compat)
 fi

@@ -21,6 +21,7 @@ import resource
 import subprocess
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech import params
@@ -61,7 +62,15 @@ def error_line(text):
     return m.group(0)[:300] if m else "no error"
 
 
-def burst_stops_osmosis(d):
+@pytest.fixture(scope="module")
+def cell(rundir):
+    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", params.LEVELS[3]["nfluid"],
+              "--inset", COARSE["r0"], cwd=rundir)
+    return rundir
+
+
+def test_burst_stops_osmosis(cell):
+    d = cell
     """5.6: tethers break at 1.005 while osmosis inflates the cell (Lp 100)."""
     # shrink-wrapped: the fluid that escapes stays in the box
     text = ("variable lamf index 1.005\n" + HEAD + "change_box all boundary m m m\n" + MODEL +
@@ -94,7 +103,8 @@ run             6000
             f"{rows[-1, 2] - rows[k, 2]:.3g} pg, {rows[-1, 3] - rows[k, 3]:.3g} pg")
 
 
-def blow_up_named(d):
+def test_blow_up_named(cell):
+    d = cell
     """5.7: a time step 20 times the inputs' 0.001 us blows the cell up within a few steps."""
     text = HEAD + MODEL + OSMOSIS + "timestep 0.02\nthermo 1\nrun 200\n"
     for n in (1, 2):
@@ -115,7 +125,8 @@ def blow_up_named(d):
             re.search(r"velocity that is not finite \(-?nan\).*NaN", err) is not None, err[:120])
 
 
-def sparse_molecule_ids(d):
+def test_sparse_molecule_ids(cell):
+    d = cell
     """5.8: the same cell as molecule 1 and as molecule 100000000."""
     body = MODEL + OSMOSIS + """
 compute         props all cell/props leaks yes
@@ -170,7 +181,8 @@ print           "UPTAKE $(v_dM:%.17g)"
                 f"rc {rc}: {up:.12g} vs {dumps['100000000.2'][2]:.12g} {error_line(log)[:100]}")
 
 
-def docs_match_code(d):
+def test_docs_match_code(cell):
+    d = cell
     """5.10: what the docs say runs."""
     text = HEAD + MODEL + "fix osmosis fluid cell/fluid Lp 1.0e-9 Pi -364.0\ntimestep 0.001\nrun 5\n"
     rc, log = run(text, d, "log.order")
@@ -213,7 +225,8 @@ def docs_match_code(d):
                 dx < 1e-9, f"{dx:.2e}")
 
 
-def extreme_values(d):
+def test_extreme_values_refused(cell):
+    d = cell
     """5.11: parseable values outside any meaningful range stop with an error."""
     sph = "pair_coeff 2 2 cell/sph {} {} 0.0 1.0 " + str(COARSE["s"]) + "\n"
     cases = [
@@ -249,19 +262,3 @@ def extreme_values(d):
           f"{feq['1e200 1e200 0']}")
     T.check("5.11 normal 1e200 1e200 0 gives the force of normal 1 1 0",
             feq["1 1 0"] is not None and feq["1 1 0"] != 0 and feq["1e200 1e200 0"] == feq["1 1 0"])
-
-
-def main():
-    d = T.workdir("probe-runs")
-    T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", params.LEVELS[3]["nfluid"],
-              "--inset", COARSE["r0"], cwd=d)
-    burst_stops_osmosis(d)
-    blow_up_named(d)
-    sparse_molecule_ids(d)
-    docs_match_code(d)
-    extreme_values(d)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -32,6 +32,7 @@ import re
 import shutil
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech import params
@@ -42,8 +43,8 @@ L3 = {k: params.LEVELS[3][k] for k in ("s", "r0", "f0", "reach")}
 PAPER = {k: params.LEVELS[4][k] for k in ("s", "r0", "f0")}
 # the lengths with the reach the pair's mesh needs: given to the runs of items 5-10, so that the
 # unfixed inputs (which took no lengths from a restart) reach each item's own defect
-LEN = dict(L3)    # reach: the generator's for the pair (main)
-SPECIAL = [0]    # the pair's extra/special/per/atom (cellgen's pair.json), set by main()
+LEN = dict(L3)    # reach: the generator's for the pair (the fixture pair)
+SPECIAL = [0]    # the pair's extra/special/per/atom (cellgen's pair.json), set by the fixture pair
 
 
 def error_line(log):
@@ -74,13 +75,47 @@ print           "MEASURE $(v_lam:%.6f) $(sum(c_leakm[9]):%.0f) $(count(fluid))"
     return rc, log, (tuple(map(float, m[-1])) if m else None)
 
 
-def item2(d):
+@pytest.fixture(scope="module")
+def pair(rundir):
+    """The coarse single cell (one.data), pair (pair.data, bare.data) and cell (cell3.data), and the pair
+    inflated briefly, every length given: the restart of items 8-10 (it writes pair.restart.lmp as
+    well). Sets SPECIAL and LEN."""
+    d = rundir
+    for old in ("default.restart", "default.restart.lmp", "bare.data.lmp", "bare.restart",
+                "bare.restart.lmp", "pair.restart"):
+        if os.path.exists(os.path.join(d, old)):
+            os.remove(os.path.join(d, old))
+    T.cellgen("tissue", "-o", "one.data", "--lattice", "sc", "--n", 1, 1, 1, "--level", 3,
+              "--nfluid", 440, cwd=d)
+    T.cellgen("tissue", "-o", "pair.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
+              "--nfluid", 440, cwd=d)
+    stats = json.load(open(os.path.join(d, "pair.json")))
+    SPECIAL[0] = stats["extra_special_per_atom"]
+    LEN["reach"] = max(L3["reach"], stats["triangle_quality"]["recommended_reach"])
+    T.coarse_cell(d, "cell3.data")
+    # bare.data: the pair without its lengths file (DATA.lmp), for the runs of item 2
+    shutil.copy(os.path.join(d, "pair.data"), os.path.join(d, "bare.data"))
+    lmp(os.path.join(INPUTS, "in.tissue-inflate"), d, "log.inflate", dir=INPUTS, data="pair.data",
+        special=SPECIAL[0], nsteps=600, nsettle=200, every=200, restart_out="pair.restart", **LEN)
+    return d
+
+
+@pytest.fixture(scope="module")
+def default_inflation(pair):
+    """2: the default inflation of the coarse pair from cellgen's data, lengths from pair.data.lmp
+    (default.restart and its RESTART.lmp): rc, log and the measure."""
+    d = pair
     inflate = os.path.join(INPUTS, "in.tissue-inflate")
-    # the default inflation of the coarse pair from cellgen's data, lengths from pair.data.lmp
     rc, log, m = measure(d, "log.2-default", inflate, dir=INPUTS, data="pair.data",
                          restart_out="default.restart")
     print(f"2: default inflation, lengths from pair.data.lmp: rc {rc}, mean stretch "
           f"{m[0] if m else '?'}, fluid outside its wall {m[1] if m else '?'} of {m[2] if m else '?'}")
+    return rc, log, m
+
+
+def test_inflation_takes_lengths_of_data(pair, default_inflation):
+    d = pair
+    rc, log, m = default_inflation
     sph = re.findall(r"^pair_coeff\s+2 2 cell/sph \S+ \S+ \S+ \S+ (\S+)$", log, re.M)
     T.check("2: in.tissue-inflate takes s of the level from DATA.lmp", rc == 0 and
             sph and float(sph[-1]) == L3["s"], f"rc {rc}: s {sph[-1] if sph else '?'}")
@@ -94,9 +129,12 @@ def item2(d):
             all(k in got and float(got[k]) == float(v) for k, v in want.items()) and
             got.get("wall") == "tether", str(got))
 
+
+def test_data_without_lengths_refused(pair):
+    d = pair
+    inflate = os.path.join(INPUTS, "in.tissue-inflate")
     # a data file without its lengths file, run as the usage line and cellgen's summary said (reach
     # and special given): the paper's lengths before
-    shutil.copy(os.path.join(d, "pair.data"), os.path.join(d, "bare.data"))
     rc, log, m = measure(d, "log.2-bare", inflate, dir=INPUTS, data="bare.data", special=SPECIAL[0],
                          reach=LEN["reach"], restart_out="bare-inflated.restart")
     if m:
@@ -105,6 +143,10 @@ def item2(d):
     refused("2: a data file without DATA.lmp and no -var lengths", rc, log,
             r"ERROR: in.tissue-inflate: bare.data.lmp is missing: it holds the model lengths")
 
+
+def test_paper_lengths_refused_on_coarse_tissue(pair):
+    d = pair
+    inflate = os.path.join(INPUTS, "in.tissue-inflate")
     # the paper's lengths given on a coarse tissue: the styles refuse them, on 1 and 2 ranks
     for n in (1, 2):
         rc, log = lmp(inflate, d, f"log.2-paper{n}", n, dir=INPUTS, data="bare.data", special=SPECIAL[0],
@@ -127,6 +169,9 @@ def item2(d):
                 r"Pair style cell/virtual: the contact distance r0 = 1\.6 of wall type 1 and fluid "
                 r"type 2 .* below 0\.5 times the mean edge 4\.\d+ of the wall's 2560 triangles", n)
 
+
+def test_continued_run_takes_restart_lengths(pair, default_inflation):
+    d = pair
     # a continued run takes the lengths of RESTART.lmp; a -var still wins
     short = dict(dir=INPUTS, restart="default.restart", strain=0.005, ramp=0, vplate=4, every=50,
                  out="c.dat", cells="c-cells.dat", pairs="c-pairs.dat")
@@ -148,6 +193,9 @@ def item2(d):
     refused("2: a restart without RESTART.lmp and no -var lengths", rc, log,
             r"ERROR: tissue-restart.lmp: bare.restart.lmp is missing: it holds the model lengths")
 
+
+def test_every_level_accepted(pair):
+    d = pair
     # no shipped level is refused: a cell of each level with the level's lengths (run 0)
     for lvl in (3, 4, 5):
         p = params.level(lvl)
@@ -163,7 +211,8 @@ def item2(d):
                 f"rc {rc}: {error_line(log)[:200]}")
 
 
-def item5(d):
+def test_one_wall_model_at_a_time(pair):
+    d = pair
     head = T.cell_from_data("cell3.data") + "include ${dir}/cell-model.lmp\n"
     run = ("fix integrate all nve\nfix osmosis fluid cell/fluid Pi -364.0 Lp 100.0\n"
            "timestep 0.001\nrun 50\n")
@@ -209,7 +258,8 @@ def item5(d):
             f"rc {rc}: {error_line(log)[:100]}")
 
 
-def item8(d):
+def test_tissue_inputs_checked(pair):
+    d = pair
     compress = os.path.join(INPUTS, "in.tissue-compress")
     base = dict(LEN, dir=INPUTS, restart="pair.restart", strain=0.01, vplate=4)
     for var, value, pattern in (
@@ -255,7 +305,8 @@ def item8(d):
             rc == 0 and pulled and min(map(int, pulled[-1])) > 0, f"rc {rc}: {pulled[-1:]}")
 
 
-def item9(d):
+def test_blow_up_causes_named(pair):
+    d = pair
     inflate = os.path.join(INPUTS, "in.tissue-inflate")
     for n in (1, 2):
         rc, log = lmp(inflate, d, f"log.9-drag{n}", n, dir=INPUTS, data="pair.data", nsteps=0,
@@ -289,7 +340,8 @@ def item9(d):
             r"times the fluid's acoustic limit 0.25 s/c")
 
 
-def item10(d):
+def test_dihedrals_and_field_order_checked(pair):
+    d = pair
     text = T.cell_from_data("cell3.data") + "dihedral_style cell/bending\ndihedral_coeff * 8.0e5 0.126\n"
     rc, log = lmp(text, d, "log.10-dihedral", dir=INPUTS)
     refused("10: dihedral_coeff * on a data file without dihedrals", rc, log,
@@ -305,33 +357,3 @@ run             10
     refused("10: fix property/atom fields in another order after read_restart", rc, log,
             r"ERROR: .*after read_restart: is fix property/atom defined with the same fields in "
             r"the same order")
-
-
-def main():
-    d = T.workdir("probe-tissue")
-    for old in ("default.restart", "default.restart.lmp", "bare.data.lmp", "bare.restart",
-                "bare.restart.lmp", "pair.restart"):
-        if os.path.exists(os.path.join(d, old)):
-            os.remove(os.path.join(d, old))
-    T.cellgen("tissue", "-o", "one.data", "--lattice", "sc", "--n", 1, 1, 1, "--level", 3,
-              "--nfluid", 440, cwd=d)
-    T.cellgen("tissue", "-o", "pair.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
-              "--nfluid", 440, cwd=d)
-    stats = json.load(open(os.path.join(d, "pair.json")))
-    SPECIAL[0] = stats["extra_special_per_atom"]
-    LEN["reach"] = max(L3["reach"], stats["triangle_quality"]["recommended_reach"])
-    T.coarse_cell(d, "cell3.data")
-    # the pair inflated briefly, every length given: the restart of items 8-10 (it writes
-    # pair.restart.lmp as well)
-    lmp(os.path.join(INPUTS, "in.tissue-inflate"), d, "log.inflate", dir=INPUTS, data="pair.data",
-        special=SPECIAL[0], nsteps=600, nsettle=200, every=200, restart_out="pair.restart", **LEN)
-    item2(d)
-    item5(d)
-    item8(d)
-    item9(d)
-    item10(d)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

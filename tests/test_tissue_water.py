@@ -21,8 +21,10 @@ failed before its fix.
 """
 import json
 import os
+from types import SimpleNamespace
 
 import numpy as np
+import pytest
 
 import lmptest as T
 from cellmech.cellgen.datafile import read_data
@@ -75,7 +77,24 @@ def run(d, data, special, opts, n, every, tag, nprocs=1, check=True):
                  variables=dict(COARSE, dir=T.INPUTS))
 
 
-def item4(d, special):
+@pytest.fixture(scope="module")
+def data(rundir):
+    """The coarse 3x3x3 block (blk.data) and the pair (two.data); the larger special count."""
+    d = rundir
+    T.cellgen("tissue", "-o", "blk.data", "--lattice", "sc", "--n", 3, 3, 3, "--level", 3,
+              "--nfluid", 440, cwd=d)
+    T.cellgen("tissue", "-o", "two.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
+              "--nfluid", 440, cwd=d)
+    special = max(json.load(open(os.path.join(d, f"{n}.json")))["extra_special_per_atom"]
+                  for n in ("blk", "two"))
+    return d, special
+
+
+@pytest.fixture(scope="module")
+def flux_block(data):
+    """The 3x3x3 block under a set flux, its centre cell closed to its neighbours (Lp 0), on 1 and 2
+    ranks: the cells' free faces, the centre, and each run's rows, uptakes, exposed area, masses."""
+    d, special = data
     free = classes(os.path.join(d, "blk.data"))
     centre = next(m for m, f in free.items() if f == 0)
     names = {0: "centre", 1: "face", 2: "edge", 3: "corner"}
@@ -87,8 +106,15 @@ def item4(d, special):
         res[np_] = (blocks(os.path.join(d, f"flux{np_}.rows")), blocks(os.path.join(d, f"flux{np_}.up")),
                     T.load(os.path.join(d, f"flux{np_}.aexp"))[-1, 1],
                     blocks(os.path.join(d, f"flux{np_}.mass")))
-    rows, up, aexp, mass = res[1]
-    ids = rows[0][:, 0].astype(int)
+    ids = res[1][0][0][:, 0].astype(int)
+    return SimpleNamespace(free=free, centre=centre, names=names, n=n, res=res, ids=ids,
+                           jc=list(ids).index(centre))
+
+
+def test_exposed_area_by_free_faces(flux_block):
+    free, centre, names, n, ids = (flux_block.free, flux_block.centre, flux_block.names, flux_block.n,
+                                   flux_block.ids)
+    rows = flux_block.res[1][0]
     for when in (0, n):
         r = rows[when]
         print(f"step {when}: exposed / wall area (um^2) per class:")
@@ -108,6 +134,11 @@ def item4(d, special):
             abs(by[2].mean() / face - 2.0) < 0.2 and abs(by[3].mean() / face - 3.0) < 0.3,
             f"face {face:.0f}, edge {by[2].mean():.0f} ({by[2].mean() / face:.2f}x), corner "
             f"{by[3].mean():.0f} ({by[3].mean() / face:.2f}x) um^2")
+
+
+def test_water_lost_through_exposed_area(flux_block):
+    free, centre, n, ids, jc = flux_block.free, flux_block.centre, flux_block.n, flux_block.ids, flux_block.jc
+    rows, up, aexp, mass = flux_block.res[1]
     # closed to its neighbours (Lp 0) the centre cell can lose water only to the outside
     lost = {m: -up[n][j, 0] for j, m in enumerate(ids)}
     print(f"water lost in {n} steps at q {Q}: centre {lost[centre]:.6g} pg; face cells "
@@ -129,16 +160,25 @@ def item4(d, special):
             own < 1e-12, f"{own:.1e}")
     T.check("4: the water lost is the flux through the exposed area (1e-9)", bal < 1e-9 and total < 0,
             f"{bal:.1e}")
-    rows2, up2, _, _ = res[2]
+
+
+def test_flux_rank_independent(flux_block):
+    n = flux_block.n
+    rows, up, _, _ = flux_block.res[1]
+    rows2, up2, _, _ = flux_block.res[2]
     dev = max(np.abs(rows2[s][:, c] - rows[s][:, c]).max() / np.abs(rows[s][:, c]).max()
               for s in (0, n) for c in (1, 4))
     dev = max(dev, np.abs(up2[n][:, 0] - up[n][:, 0]).max() / np.abs(up[n][:, 0]).max())
     T.check("4: 2 ranks = 1 rank (water, exposed area, uptakes; 1e-10)", dev < 1e-10, f"{dev:.1e}")
 
+
+def test_drying_centre_loses_least(data, flux_block):
+    d, special = data
+    free, centre, names, ids = flux_block.free, flux_block.centre, flux_block.names, flux_block.ids
     # against the air's potential, the neighbours' exchange on: the centre loses water only through
     # them, less than any cell with a free face
     run(d, "blk.data", special, "solute yes exchange yes external psi -3000", 300, 300, "psi")
-    rows, up = blocks(os.path.join(d, "psi.rows")), blocks(os.path.join(d, "psi.up"))
+    up = blocks(os.path.join(d, "psi.up"))
     lost = {m: -up[300][j, 0] for j, m in enumerate(ids)}
     byc = {k: [lost[m] for m in ids if free[m] == k] for k in range(4)}
     print("psi -3000 kPa, 0.3 us, water lost (pg): " +
@@ -146,6 +186,10 @@ def item4(d, special):
     T.check("4: drying in air, the centre cell loses less water than any cell with a free face",
             lost[centre] < min(byc[1]), f"centre {lost[centre]:.4g}, face cells >= {min(byc[1]):.4g} pg")
 
+
+def test_exposed_unglued_option(data, flux_block):
+    d, special = data
+    jc = flux_block.jc
     # the old area, now an explicit choice: every space between cells counts as outside
     run(d, "blk.data", special, "solute yes exchange yes external flux 0 exposed unglued", 1, 1, "unglued")
     r = blocks(os.path.join(d, "unglued.rows"))[0]
@@ -160,7 +204,8 @@ def centroids(data):
     return {int(m): wall[wall[:, 1] == m, 3:6].mean(0) for m in np.unique(wall[:, 1])}
 
 
-def item4_pair(d, special):
+def test_what_hides_a_wall(data):
+    d, special = data
     """What hides a wall: glued (lamella bonds) or another cell's wall within D in front. The glued
     pair, its cells pulled 4 um further apart (bonds stretched, intact; walls 6.6 um apart, beyond
     D = 5 um), the lamella bonds deleted (walls touching), and both."""
@@ -192,7 +237,8 @@ def item4_pair(d, special):
             f"{E['unglued, pulled apart'][0]:.1f} of {E['unglued, pulled apart'][1]:.1f}")
 
 
-def item6(d, special):
+def test_ave_time_rows_before_first_run(data):
+    d, special = data
     # fix ave/time defined before the first run, as in.tissue-dry and in.tissue-inflate define theirs
     text = HEAD.format(data="two.data", special=special) + """
 fix             w fluid cell/fluid Pi ${Pi} Lp 2.0e-4 exchange yes external flux 1e-4
@@ -224,7 +270,8 @@ BAD = [
 ]
 
 
-def item10(d, special):
+def test_bad_cells_inputs_reported(data):
+    d, special = data
     for opts, content, expect in BAD:
         if content is not None:
             with open(os.path.join(d, opts.split()[1]), "w") as f:
@@ -272,22 +319,3 @@ run 0
     T.check("10: ... and still writes the shape (gyration tensor) of both walls",
             all(r.shape == (2, 6) and (r[:, :3] > 0).all() for r in cells.values()),
             str({s: r.shape for s, r in cells.items()}))
-
-
-def main():
-    d = T.workdir("tissue_water_probe")
-    T.cellgen("tissue", "-o", "blk.data", "--lattice", "sc", "--n", 3, 3, 3, "--level", 3,
-              "--nfluid", 440, cwd=d)
-    T.cellgen("tissue", "-o", "two.data", "--lattice", "sc", "--n", 1, 1, 2, "--level", 3,
-              "--nfluid", 440, cwd=d)
-    special = max(json.load(open(os.path.join(d, f"{n}.json")))["extra_special_per_atom"]
-                  for n in ("blk", "two"))
-    item4(d, special)
-    item4_pair(d, special)
-    item6(d, special)
-    item10(d, special)
-    T.finish()
-
-
-if __name__ == "__main__":
-    main()

@@ -19,6 +19,8 @@ import os
 import re
 import subprocess
 
+import pytest
+
 import lmptest as T
 from cellmech.cellgen.datafile import read_data
 
@@ -85,12 +87,19 @@ CASES = [
 ]
 
 
-def main():
-    d = T.workdir("probe")
+@pytest.fixture(scope="module")
+def cell(rundir):
+    """The coarse cell; COARSE["fluidatom"] its first fluid particle."""
+    d = rundir
     T.cellgen("cell", "-o", "cell.data", "--level", 3, "--nfluid", 440, "--inset", 3.2, cwd=d)
     # the first fluid particle (type 2) of the data file: "ID molecule type x y z ..."
     COARSE["fluidatom"] = next(int(w[0]) for w in read_data(f"{d}/cell.data").rows("Atoms")
                                if w[2] == "2")
+    return d
+
+
+def test_bad_inputs_stop_with_error(cell):
+    d = cell
     # the same input with the right coefficient runs: the cases fail for their one defect only
     ok = CELL.format(units="micro") + TYPO.replace("2 2 cell/virtual", "1 2 cell/virtual")
     rc, log = T.lmp(ok, cwd=d, variables=COARSE, check=False, log="log.ok")
@@ -107,11 +116,10 @@ def main():
             T.check(f"{name}, {nprocs} rank(s): a clear error", not crashed and rc != 0 and
                     re.search(pattern, log) is not None,
                     f"rc {rc}: {err.group(0)[:170] if err else 'no error'}")
-    main_job_inputs(d)
-    T.finish()
 
 
-def main_job_inputs(d):
+def test_main_job_settings_refused(rundir):
+    d = rundir
     """Bad settings of the main job stop it at once, before the setup starts."""
     for setting, pattern in (("LEVEL=7", "LEVEL must be 3, 4 or 5"),
                              ("NP=0", "NP .* must be a whole number >= 1"),
@@ -129,6 +137,3 @@ def main_job_inputs(d):
                 "[setup]" not in out and re.search(pattern, out) is not None,
                 f"rc {rc}: {out.strip().splitlines()[-1][:120] if out.strip() else ''}")
 
-
-if __name__ == "__main__":
-    main()
