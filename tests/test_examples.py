@@ -60,7 +60,7 @@ SHORT = {
 
 def test_every_example_runs(rundir):
     d = rundir
-    # in.relax and in.turgor cache their compressed/settled state: a state left by an earlier
+    # in.relax caches its compressed state (in.turgor writes its settled one): a state left by an earlier
     # run of this test would let the 1-rank run skip the stage it must test
     for cached in ("relax-short.restart", "turgor-short.restart"):
         if os.path.exists(os.path.join(d, cached)):
