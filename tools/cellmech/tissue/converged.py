@@ -29,7 +29,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from .. import params  # noqa: E402
 from .. import quasistatic as Q  # noqa: E402
-from .tissuedata import COMPRESS, and_list, failure, fmt, gen_stats, load, span  # noqa: E402
+from .tissuedata import COMPRESS, TENSION, and_list, failure, fmt, gen_stats, load, span  # noqa: E402
 
 PIS = (-100, -364, -600)
 LAMELLAE = tuple(params.lamellae())   # the named lamellae: strong, weak
