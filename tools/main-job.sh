@@ -29,17 +29,17 @@ NFLUID=${NFLUID:-$nf}
 ninfl=$(/usr/bin/python3 -c "print(round(25.0/$dt))")
 model=(-var dir "$here/lammps-inputs" -var s "$s" -var r0 "$r0" -var f0 "$f0" -var reach "$reach" -var dt "$dt" "${wall_vars[@]}")
 run() { mpi_run "$NP" "$LMP" "$@"; }
-# trun ARGS...: a tissue run, its effective settings first written to settings.json (one entry per input)
+# trun ARGS...: a run, its effective settings first written to settings.json (one entry per input)
 trun() { /usr/bin/python3 -m cellmech.params settings -- "$@" && run "$@"; }
 /usr/bin/python3 "$here/tools/cellgen.py" cell -o cell.data --level "$LEVEL" --nfluid "$NFLUID" --inset "$r0" "${wall_gen[@]}"
 echo "inflating ..."
-run -in "$here/lammps-inputs/in.inflate" -log log.inflate -screen none "${model[@]}" \
+trun -in "$here/lammps-inputs/in.inflate" -log log.inflate -screen none "${model[@]}" \
   -var data cell.data -var nsteps $ninfl -var every 500 -var out inflate.dat -var restart_out inflated.restart
 echo "compressing ..."
 # quasi-static (issue 29; docs/Howto_plates.rst): both plates closing at 0.25 m/s after a smooth
 # start, and the protoplasm at 10 mPa s, which takes out the coarse fluid's rearrangement noise
 # (+-10% on the curve at 1 mPa s) and adds a viscous stress of mu x strain rate = 0.08 kPa
-run -in "$here/lammps-inputs/in.compress" -log log.compress -screen none "${model[@]}" \
+trun -in "$here/lammps-inputs/in.compress" -log log.compress -screen none "${model[@]}" \
   -var restart inflated.restart -var vplate 0.25 -var plates both -var ramp 0.02 -var mu 10 \
   -var every 100 -var out compress.dat -var vtk 5000
 /usr/bin/python3 "$here/tools/plot_main.py" "$out"
