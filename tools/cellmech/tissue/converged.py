@@ -244,7 +244,7 @@ def table(rows):
             f"{'burst before loading' if m.get('burst') else f['mode']}"
             f"{' (stopped early, below)' if m.get('notes') else ''} | "
             f"{judged(m)} | {pct(m['balance'])} | {pct(m['ke'])} | {pct(m['rate'])} | "
-            f"{'-' if m['start'] is None else format(m['start'], '.0%')} |")
+            f"{'-' if m['start'] is None else strain_pct(m['start'])} |")
     return "\n".join(lines)
 
 
@@ -414,6 +414,15 @@ def surface(gen):
             f"{gen['cells'] - inner} of its {gen['cells']} cells lie on its surface, free to bulge sideways")
 
 
+def run_info(runs):
+    """What ran, from RUNS/run-info.txt: the driver's lines of this kind (a folder may hold both
+    experiments on the same inflated blocks; the tension's lines start with EXP=tension)."""
+    if not os.path.exists(f"{runs}/run-info.txt"):
+        return runs
+    lines = [ln for ln in open(f"{runs}/run-info.txt").read().split("\n") if ln]
+    return "; ".join(ln for ln in lines if ln.startswith("EXP=tension") == (KIND.stage == "tension"))
+
+
 def main(argv=None):
     global KIND
     args = argv or sys.argv[1:]
@@ -429,8 +438,7 @@ def main(argv=None):
     rows = {}
     for key, (v, slow, fast, notes) in data.items():
         rows[key] = dict(measure(slow, fast), v=v, notes=notes)
-    info = "; ".join(open(f"{runs}/run-info.txt").read().split("\n")).strip("; ") \
-        if os.path.exists(f"{runs}/run-info.txt") else runs
+    info = run_info(runs)
     gen = gen_stats(f"{runs}/gen/block.json")
     lams = lamella_settings(runs, data)
     figure(data, lams, f"{report}/{name}.png")
