@@ -124,3 +124,31 @@ def test_the_summary_says_what_ran_and_what_passed():
     assert "at v = 0.125 and 0.25 m/s" in text and "critical stretch 1.04" in text
     assert "The modulus converged in 2 of 2 conditions" in text and ": 800 kPa." in text
     assert "First failure: none" in text and "in 2 of 2 conditions" in text
+
+
+def test_a_tension_is_judged_on_the_rise_to_its_peak(monkeypatch):
+    """Past the peak the lamella lets go faster than any grip moves: the checks of a tension end
+    there, so a fast run that parts from the slow one only after the peak still agrees."""
+    monkeypatch.setattr(C, "KIND", C.KINDS["tension"])
+    e = np.linspace(0.0, 0.06, 241)
+    rise = np.where(e < 0.03, 300.0 * e, 9.0 - 400.0 * (e - 0.03))      # peak 9 kPa at 3%
+    slow = record(e, rise)
+    m = C.measure(slow, record(e, np.where(e < 0.03, rise, 0.5 * rise)))
+    assert abs(m["judged"][1] - 0.03) < 1e-3 and m["judged"][0] == C.KINDS["tension"].start
+    assert m["converged"] and abs(m["E"] - 300.0) < 1e-6 and m["rate"] < 1e-12
+    # the same fast run judged as a compression (to the end of the record) has not converged
+    monkeypatch.setattr(C, "KIND", C.KINDS["compress"])
+    assert not C.measure(slow, record(e, np.where(e < 0.03, rise, 0.5 * rise)))["converged"]
+
+
+def test_a_tension_run_folder_is_read_as_such(tmp_path, monkeypatch):
+    monkeypatch.setattr(C, "KIND", C.KINDS["tension"])
+    e = np.linspace(0.0, 0.1, 21)
+    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
+    for speed in (0.125, 0.0625):
+        d = tmp_path / f"tension-100-weak-{speed:g}"
+        d.mkdir()
+        np.savetxt(d / "tissue-tension.dat", rows)
+    (tmp_path / "compress-100-weak-0.25").mkdir()           # the other experiment's runs are not read
+    found = C.load_runs(str(tmp_path))
+    assert list(found) == [(-100, "weak")] and found[-100, "weak"][0] == 0.0625
