@@ -43,7 +43,8 @@ class Kind:
     start: float        # the checks start here (strain)
     width: float        # the checks' strain windows
     to_peak: bool       # the checks end at the peak stress: past it the lamella lets go faster than
-                        # any grip moves, so only the rise to the failure can be quasi-static
+                        # any grip moves, so only the rise to the failure can be quasi-static; and
+                        # the modulus is only of an intact lamella, which a pull loads directly
     title: str
     did: str            # what was done to the block, for the summary
     ends: str           # the plates or the grips, in the tables' words
@@ -122,8 +123,9 @@ def measure(slow, fast):
     rate = Q.rate_difference(fast, slow, KIND.start, hi, width=KIND.width)
     worst = max((abs(r.difference) for r in rate if r.difference is not None), default=float("nan"))
     start = converged_from(bal, rate)
-    # a modulus only of the intact block: its window ends before the first rupture
-    intact = KIND.window[1] <= hi
+    # a modulus only of the intact block: its window ends before the first rupture (and in a
+    # tension before the first debond)
+    intact = KIND.window[1] <= min(hi, f["first"].get("lamella debonding", end) if KIND.to_peak else hi)
     # the failure has converged when both speeds first rupture (or first debond) within 1% strain;
     # a wall that ruptured before KIND.start burst under its own turgor (at the inflation or the plates'
     # first touch): that is no compression failure, and its peak no failure stress
@@ -373,7 +375,7 @@ energy against the {KIND.ends}' work (printed, not judged); *vs 2v*: the largest
 window-mean {KIND.ends[:-1]} force between the two speeds. *Converged from*: the strain from which every {strain_pct(KIND.width)}
 window balances within 5% and agrees with 2v within 5%; a condition counts as converged when
 that is at or below the modulus window (no modulus where the block has ruptured before the window
-ends).
+ends{', or its lamella has begun to let go: a pull loads it directly' if KIND.to_peak else ''}).
 
 ## Side by side with parenchyma
 
