@@ -152,3 +152,14 @@ def test_a_tension_run_folder_is_read_as_such(tmp_path, monkeypatch):
     (tmp_path / "compress-100-weak-0.25").mkdir()           # the other experiment's runs are not read
     found = C.load_runs(str(tmp_path))
     assert list(found) == [(-100, "weak")] and found[-100, "weak"][0] == 0.0625
+
+
+def test_a_tension_gives_no_modulus_once_its_lamella_lets_go(monkeypatch):
+    monkeypatch.setattr(C, "KIND", C.KINDS["tension"])
+    e = np.linspace(0.0, 0.06, 241)
+    rise = np.where(e < 0.03, 300.0 * e, 9.0 - 400.0 * (e - 0.03))
+    intact = C.measure(record(e, rise), record(e, rise))
+    peeling = record(e, rise)
+    peeling["debonded_bonds"] = np.where(e > 0.012, 5.0, 0.0)     # bonds let go inside the 1-2% window
+    peeled = C.measure(peeling, record(e, rise))
+    assert np.isfinite(intact["E"]) and not np.isfinite(peeled["E"]) and not peeled["converged"]
