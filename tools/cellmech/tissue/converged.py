@@ -341,7 +341,7 @@ def summary(rows, gen, lams, lamf):
               f"{'to the peak' if KIND.to_peak else 'on'}, the block still intact)"
               + (f": {span(Es)} kPa." if conv else ".")
               + f" The failure converged in {len(fconv)} (the first rupture or debond at both speeds within 1% "
-              f"strain, the walls intact at {KIND.start:.0%})" + (f": failure stress {span(peaks)} kPa." if fconv else "."))
+              f"strain, the walls intact at {strain_pct(KIND.start)})" + (f": failure stress {span(peaks)} kPa." if fconv else "."))
     return " ".join(x for x in (ran, passed, f"First failure: {modes_words(rows)}.", compare(rows),
                                 "Every number is from the run at v; a condition that has not converged is a rate "
                                 "study, and its row says so.") if x)
