@@ -3,8 +3,9 @@
 # The paper's experiments (docs/model.md section 4, paper Secs. III A-D, Figs. 4-11) in one command:
 # quasistatic compression at two rates, turgor series, relaxation (stiff and soft, viscosities,
 # zeta = 1.1 wall), impact at 5 m/s (stiff and soft, 1-1000 mPa s), failure (lamf = 1.04,
-# quasistatic and impact). Writes the data of each run to $OUT, then the report experiments.md
-# with its plots (tools/cellmech/experiments/report.py).
+# quasistatic and impact). Writes the data of each run to $OUT (its effective settings in
+# $OUT/settings.json, under its log name), then the report experiments.md with its plots
+# (tools/cellmech/experiments/report.py).
 #   RES=coarse bash tools/experiments.sh   # 642 + ~460 particles per cell, minutes (default)
 #   RES=paper  bash tools/experiments.sh   # 2562 + 3500, the paper's resolution; report in docs/
 # Environment: OUT (run folder, default results/experiments-$RES), NP (MPI ranks, default 1),
@@ -62,11 +63,15 @@ stage() {
   echo "$name $(( $(date +%s) - t0 )) $st" >> times.txt
   [ $rc -eq 0 ] || echo "  $name failed, see log.$name" >&2
 }
-# L NAME INPUT ARGS: soft-cell runs pass "${soft[@]}", which sets reach; the others get the default
+# L NAME INPUT ARGS: soft-cell runs pass "${soft[@]}", which sets reach; the others get the default.
+# The run's effective settings (every -var and the defaults that applied) go to settings.json
+# first, under its log name: stages share the folder and some run the same input
+# (cellmech.params.recorded_settings reads them back)
 L() {
   local name=$1; shift
   local r=(-var reach "$reach"); [[ " $* " == *" reach "* ]] && r=()
-  lmp -in "$@" -log "log.$name" -screen none "${model[@]}" "${r[@]}"
+  local run=(-in "$@" -log "log.$name" -screen none "${model[@]}" "${r[@]}")
+  $py -m cellmech.params settings --key "log.$name" -- "${run[@]}" && lmp "${run[@]}"
 }
 
 echo "RES=$RES (level $LEVEL, $NFLUID fluid), output in $out"

@@ -8,6 +8,9 @@ from cellmech import quasistatic as Q
 from cellmech.tissue import converged as C
 from cellmech.tissue.tissuedata import COMPRESS
 
+# the two experiments the report judges (the Kind each of its functions is given)
+COMP, TENS = C.KINDS["compress"], C.KINDS["tension"]
+
 
 def record(strain, stress, a0=1.0e4, ke=0.0):
     d = {name: np.zeros_like(strain) for name in COMPRESS}
@@ -29,13 +32,13 @@ def test_modulus_is_the_slope_over_its_window():
 def test_converged_needs_balance_and_agreement_of_speeds():
     e = np.linspace(0.0, 0.1, 201)
     slow = record(e, 800.0 * e)
-    same = C.measure(slow, record(e, 800.0 * e))
+    same = C.measure(COMP, slow, record(e, 800.0 * e))
     assert same["converged"] and abs(same["E"] - 800.0) < 1e-6
-    moved = C.measure(slow, record(e, 900.0 * e))          # the fast curve 12.5% stiffer
+    moved = C.measure(COMP, slow, record(e, 900.0 * e))          # the fast curve 12.5% stiffer
     assert not moved["converged"] and moved["rate"] > Q.TOL_RATE
     off = record(e, 800.0 * e)
     off["F_bottom_nN"] = 0.8 * off["F_top_nN"]             # plates 22% apart
-    assert not C.measure(off, record(e, 800.0 * e))["converged"]
+    assert not C.measure(COMP, off, record(e, 800.0 * e))["converged"]
 
 
 def test_each_condition_is_judged_on_its_two_slowest_rungs(tmp_path):
@@ -45,7 +48,7 @@ def test_each_condition_is_judged_on_its_two_slowest_rungs(tmp_path):
         d = tmp_path / f"compress-364-strong-{speed:g}"
         d.mkdir()
         np.savetxt(d / "tissue-compress.dat", rows)
-    found = C.load_runs(str(tmp_path))
+    found = C.load_runs(COMP, str(tmp_path))
     assert list(found) == [(-364, "strong")] and found[-364, "strong"][0] == 0.25
 
 
@@ -72,7 +75,7 @@ def test_a_run_stopped_by_an_error_is_named_with_where_it_stopped(tmp_path):
         (d / "log.lammps").write_text(run + ("ERROR on proc 0: Bond style cell/tether: atom 7 moved\n"
                                              if speed == 0.25 else
                                              "Loop time of 60 on 1 procs\nERROR: Unknown command: rea\n"))
-    v, slow, fast, notes = C.load_runs(str(tmp_path))[-100, "weak"]
+    v, slow, fast, notes = C.load_runs(COMP, str(tmp_path))[-100, "weak"]
     assert v == 0.25 and len(notes) == 1
     assert notes[0].startswith("the run at 0.25 m/s stopped at 5.0% strain: ERROR on proc 0: Bond style")
     assert "Stopped early" in C.stopped_text({(-100, "weak"): {"notes": notes}})
@@ -82,14 +85,14 @@ def test_a_block_burst_before_loading_gives_no_failure_stress():
     e = np.linspace(0.0, 0.1, 201)
     burst = record(e, 100.0 * e)
     burst["broken_tethers"] = np.where(e > 0.005, 40.0, 0.0)     # walls broken at 0.5% strain
-    m = C.measure(burst, burst)
-    assert m["burst"] and not m["failure_converged"] and "burst before loading" in C.table({(-600, "weak"): dict(m, v=0.25)})
+    m = C.measure(COMP, burst, burst)
+    assert m["burst"] and not m["failure_converged"] and "burst before loading" in C.table(COMP, {(-600, "weak"): dict(m, v=0.25)})
 
 
 def test_a_stress_still_rising_at_the_end_is_no_failure_stress():
     e = np.linspace(0.0, 0.1, 201)
-    m = C.measure(record(e, 800.0 * e), record(e, 800.0 * e))
-    assert m["rising"] and not m["failure_converged"] and "| > 7" in C.table({(-100, "weak"): dict(m, v=0.25)})
+    m = C.measure(COMP, record(e, 800.0 * e), record(e, 800.0 * e))
+    assert m["rising"] and not m["failure_converged"] and "| > 7" in C.table(COMP, {(-100, "weak"): dict(m, v=0.25)})
 
 
 def test_the_lamellae_are_read_from_the_runs_settings(tmp_path):
@@ -104,45 +107,42 @@ def test_the_lamellae_are_read_from_the_runs_settings(tmp_path):
             np.savetxt(d / "tissue-compress.dat", rows)
             params.write_settings(["-in", f"{params.INPUTS}/in.tissue-compress", "-var", "sigl", str(sigl),
                                    "-var", "Gl", "250", "-var", "lamf", "1.05"], str(d))
-    lams = C.lamella_settings(str(tmp_path), C.load_runs(str(tmp_path)))
+    lams = C.lamella_settings(COMP, str(tmp_path), C.load_runs(COMP, str(tmp_path)))
     assert (lams["strong"]["sigl"], lams["weak"]["sigl"], lams["weak"]["Gl"]) == (42.0, 7.0, 250.0)
     assert C.lamella_words(lams) == ("a strong (sigl 42 kPa, Gl 0.25 J/m^2) and a weak lamella "
                                      "(7 kPa, 0.25 J/m^2)")
     # a run older than settings.json: the named lamella of cellmech.params
     (tmp_path / "compress-364-weak-0.25" / "settings.json").unlink()
-    assert C.run_settings(str(tmp_path), -364, "weak", 0.25)["sigl"] == params.lamellae()["weak"]["sigl"]
+    assert C.run_settings(COMP, str(tmp_path), -364, "weak", 0.25)["sigl"] == params.lamellae()["weak"]["sigl"]
 
 
 def test_the_summary_says_what_ran_and_what_passed():
     e = np.linspace(0.0, 0.1, 201)
-    m = C.measure(record(e, 800.0 * e), record(e, 800.0 * e))
+    m = C.measure(COMP, record(e, 800.0 * e), record(e, 800.0 * e))
     rows = {(-100, "weak"): dict(m, v=0.25), (-364, "weak"): dict(m, v=0.125)}
     gen = {"cells": 8, "seeds": "lattice sc 2x2x2, constant 48.36", "wall_nodes_per_cell": 642,
            "volume_mean": 48.0 ** 3, "faces_mean": 6.0, "neighbours_mean": 3.0, "cell": [{"fluid": 440}] * 8}
-    text = C.summary(rows, gen, {"weak": {"sigl": 30.0, "Gl": 100.0}}, 1.04)
+    text = C.summary(COMP, rows, gen, {"weak": {"sigl": 30.0, "Gl": 100.0}}, 1.04)
     assert "inflated at Pi -100 and -364 kPa with a weak lamella (sigl 30 kPa, Gl 0.1 J/m^2)" in text
     assert "at v = 0.125 and 0.25 m/s" in text and "critical stretch 1.04" in text
     assert "The modulus converged in 2 of 2 conditions" in text and ": 800 kPa." in text
     assert "First failure: none" in text and "in 2 of 2 conditions" in text
 
 
-def test_a_tension_is_judged_on_the_rise_to_its_peak(monkeypatch):
+def test_a_tension_is_judged_on_the_rise_to_its_peak():
     """Past the peak the lamella lets go faster than any grip moves: the checks of a tension end
     there, so a fast run that parts from the slow one only after the peak still agrees."""
-    monkeypatch.setattr(C, "KIND", C.KINDS["tension"])
     e = np.linspace(0.0, 0.06, 241)
     rise = np.where(e < 0.03, 300.0 * e, 9.0 - 400.0 * (e - 0.03))      # peak 9 kPa at 3%
     slow = record(e, rise)
-    m = C.measure(slow, record(e, np.where(e < 0.03, rise, 0.5 * rise)))
-    assert abs(m["judged"][1] - 0.03) < 1e-3 and m["judged"][0] == C.KINDS["tension"].start
+    m = C.measure(TENS, slow, record(e, np.where(e < 0.03, rise, 0.5 * rise)))
+    assert abs(m["judged"][1] - 0.03) < 1e-3 and m["judged"][0] == TENS.start
     assert m["converged"] and abs(m["E"] - 300.0) < 1e-6 and m["rate"] < 1e-12
     # the same fast run judged as a compression (to the end of the record) has not converged
-    monkeypatch.setattr(C, "KIND", C.KINDS["compress"])
-    assert not C.measure(slow, record(e, np.where(e < 0.03, rise, 0.5 * rise)))["converged"]
+    assert not C.measure(COMP, slow, record(e, np.where(e < 0.03, rise, 0.5 * rise)))["converged"]
 
 
-def test_a_tension_run_folder_is_read_as_such(tmp_path, monkeypatch):
-    monkeypatch.setattr(C, "KIND", C.KINDS["tension"])
+def test_a_tension_run_folder_is_read_as_such(tmp_path):
     e = np.linspace(0.0, 0.1, 21)
     rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
     for speed in (0.125, 0.0625):
@@ -150,16 +150,40 @@ def test_a_tension_run_folder_is_read_as_such(tmp_path, monkeypatch):
         d.mkdir()
         np.savetxt(d / "tissue-tension.dat", rows)
     (tmp_path / "compress-100-weak-0.25").mkdir()           # the other experiment's runs are not read
-    found = C.load_runs(str(tmp_path))
+    found = C.load_runs(TENS, str(tmp_path))
     assert list(found) == [(-100, "weak")] and found[-100, "weak"][0] == 0.0625
 
 
-def test_a_tension_gives_no_modulus_once_its_lamella_lets_go(monkeypatch):
-    monkeypatch.setattr(C, "KIND", C.KINDS["tension"])
+def test_a_tension_gives_no_modulus_once_its_lamella_lets_go():
     e = np.linspace(0.0, 0.06, 241)
     rise = np.where(e < 0.03, 300.0 * e, 9.0 - 400.0 * (e - 0.03))
-    intact = C.measure(record(e, rise), record(e, rise))
+    intact = C.measure(TENS, record(e, rise), record(e, rise))
     peeling = record(e, rise)
     peeling["debonded_bonds"] = np.where(e > 0.012, 5.0, 0.0)     # bonds let go inside the 1-2% window
-    peeled = C.measure(peeling, record(e, rise))
+    peeled = C.measure(TENS, peeling, record(e, rise))
     assert np.isfinite(intact["E"]) and not np.isfinite(peeled["E"]) and not peeled["converged"]
+
+
+def test_the_report_is_written_as_the_kind_named(tmp_path):
+    """main() hands the kind it is named (its KIND argument) to every step: a tension's report has
+    the tension's title, grips, windows and run-info lines, and reads only the tension's runs."""
+    import json
+    e = np.linspace(0.0, 0.06, 241)
+    rise = np.where(e < 0.03, 300.0 * e, 9.0 - 400.0 * (e - 0.03))
+    for stage in ("tension", "compress"):
+        for speed in (0.125, 0.0625):
+            d = tmp_path / f"{stage}-100-weak-{speed:g}"
+            d.mkdir()
+            r = record(e, rise if stage == "tension" else 2 * rise)
+            np.savetxt(d / f"tissue-{stage}.dat", np.column_stack([np.arange(len(e))] + [r[n] for n in COMPRESS]))
+    (tmp_path / "gen").mkdir()
+    (tmp_path / "gen" / "block.json").write_text(json.dumps(
+        {"cells": 8, "seeds": "lattice sc 2x2x2, constant 48.36", "wall_nodes_per_cell": 642,
+         "volume_mean": 48.0 ** 3, "faces_mean": 6.0, "neighbours_mean": 3.0, "cell": [{"fluid": 440}] * 8}))
+    (tmp_path / "run-info.txt").write_text("RES=coarse BLOCK=2x2x2\nEXP=tension RES=coarse BLOCK=2x2x2\n")
+    C.main([str(tmp_path), str(tmp_path), "tq", "tension"])
+    md = (tmp_path / "tq.md").read_text()
+    assert md.startswith(f"# {TENS.title}\n") and "(EXP=tension RES=coarse BLOCK=2x2x2)" in md
+    assert "| modulus 1%-2% (kPa) |" in md and "| grips (worst) |" in md
+    row = next(ln for ln in md.split("\n") if ln.startswith("| -100 | weak |"))
+    assert row.split("|")[3].strip() == "0.0625" and abs(float(row.split("|")[5]) - 300.0) < 1e-6

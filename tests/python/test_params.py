@@ -136,6 +136,17 @@ def test_settings_json_holds_the_vars_passed_and_the_defaults(tmp_path):
     data = json.load(open(tmp_path / "settings.json"))
     assert set(data) == {"in.tissue-compress", "in.tissue-inflate"}
     assert data["in.tissue-compress"]["var"]["vplate"] == 0.5
+    assert set(data["in.tissue-compress"]) == {"var", "settings"}
+    # a second run of the same input under its own key (tools/experiments.sh: its log name) keeps
+    # the first; run_settings reads each back by its key
+    params.write_settings(["-in", inp, "-var", "dir", params.INPUTS, "-var", "vplate", "0.25"], str(tmp_path),
+                          key="log.slow")
+    data = json.load(open(tmp_path / "settings.json"))
+    assert set(data) == {"in.tissue-compress", "in.tissue-inflate", "log.slow"}
+    assert data["log.slow"]["input"] == "in.tissue-compress"
+    assert params.run_settings(str(tmp_path), "in.tissue-compress", key="log.slow")["vplate"] == 0.25
+    assert params.run_settings(str(tmp_path), "in.tissue-compress")["vplate"] == 0.5
+    assert params.recorded_settings(str(tmp_path), "log.fast") is None
     old = params.run_settings(str(tmp_path / "none"), "in.tissue-compress", {"sigl": 30.0})
     assert old["sigl"] == 30.0 and old["vplate"] == params.defaults(inp)["vplate"]
     p = subprocess.run([sys.executable, "-m", "cellmech.params", "settings", "--", "-var", "a", "1"],

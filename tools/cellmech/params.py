@@ -13,7 +13,8 @@ Shell scripts read both through the command line:
   python3 -m cellmech.params cell R M_wall P                    -> 30.0 13000.0 364.0
   python3 -m cellmech.params lamella weak sigl Gl               -> 30.0 100.0
   python3 -m cellmech.params settings -- -in FILE -var Pi -100 ...   (before a LAMMPS run: writes
-      ./settings.json, the run's effective settings; `run_settings()` reads them back)
+      ./settings.json, the run's effective settings; `run_settings()` reads them back; with
+      --key log.NAME before the --, under that key: runs of one input sharing a folder)
 (tools/common.sh sets PYTHONPATH for them). Units micro: um, pg, us, kPa, nN, mPa s.
 """
 import argparse
@@ -127,10 +128,11 @@ def lammps_vars(argv):
     return inp, var
 
 
-def write_settings(argv, folder="."):
+def write_settings(argv, folder=".", key=None):
     """Record a LAMMPS run's effective settings in FOLDER/settings.json, under its input's name:
     the -var values passed (var) and every index setting with the defaults that applied (settings).
-    A folder of several runs keeps one entry per input."""
+    A folder of several runs keeps one entry per input; one where an input runs more than once
+    (tools/experiments.sh) gives each run its own key (its log name), the entry naming its input."""
     inp, var = lammps_vars(argv)
     if inp is None:
         raise ValueError("settings: no -in FILE in the LAMMPS command line")
@@ -139,23 +141,38 @@ def write_settings(argv, folder="."):
     eff.update(var)
     path = os.path.join(folder, SETTINGS)
     data = json.load(open(path)) if os.path.exists(path) else {}
-    data[os.path.basename(inp)] = {"var": var, "settings": eff}
+    entry = {"var": var, "settings": eff}
+    if key is not None:
+        entry = {"input": os.path.basename(inp), **entry}
+    data[os.path.basename(inp) if key is None else key] = entry
     with open(path, "w") as f:
         json.dump(data, f, indent=1)
         f.write("\n")
     return eff
 
 
-def run_settings(folder, inp, var=None):
-    """A run's effective settings, read back from FOLDER/settings.json (its entry for input inp).
-    A run older than settings.json has none: then the input's defaults here, with var (what its
-    driver is known to have passed) over them, and a note on stderr."""
+def recorded_settings(folder, key):
+    """The effective settings FOLDER/settings.json holds under key (an input's name, or the key
+    of a run write_settings was given); None where there is no such record (a run from before)."""
     path = os.path.join(folder, SETTINGS)
     if os.path.exists(path):
         data = json.load(open(path))
-        if inp in data:
-            return data[inp]["settings"]
-    print(f"params: no {inp} entry in {path}: {inp}'s defaults assumed", file=sys.stderr)
+        if key in data:
+            return data[key]["settings"]
+    return None
+
+
+def run_settings(folder, inp, var=None, key=None):
+    """A run's effective settings, read back from FOLDER/settings.json (its entry for input inp,
+    or under key where the run was recorded under one). A run older than settings.json has none:
+    then the input's defaults here, with var (what its driver is known to have passed) over them,
+    and a note on stderr."""
+    eff = recorded_settings(folder, inp if key is None else key)
+    if eff is not None:
+        return eff
+    name = inp if key is None else key
+    print(f"params: no {name} entry in {os.path.join(folder, SETTINGS)}: {inp}'s defaults assumed",
+          file=sys.stderr)
     eff = defaults(os.path.join(INPUTS, inp))
     eff.update(var or {})
     return eff
@@ -199,11 +216,12 @@ def main(argv=None):
     la.add_argument("name", choices=sorted(lamellae()))
     la.add_argument("keys", nargs="*", help="of sigl, Gl")
     se = sub.add_parser("settings", help="write ./settings.json for a LAMMPS command line")
+    se.add_argument("--key", help="record the run under this key (default: its input's name)")
     se.add_argument("lammps", nargs=argparse.REMAINDER, help="-- -in FILE -var NAME VALUE ...")
     a = p.parse_args(argv)
     if a.what == "settings":
         try:
-            write_settings([x for x in a.lammps if x != "--"])
+            write_settings([x for x in a.lammps if x != "--"], key=a.key)
         except (ValueError, OSError) as e:
             p.exit(2, f"{p.prog} settings: error: {e}\n")
         return

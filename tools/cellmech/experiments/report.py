@@ -105,6 +105,14 @@ run_setting = rp.run_setting
 fmt = rp.fmt
 pct = rp.change
 
+
+def recorded(path, stage):
+    """The effective settings of the run of `stage` that wrote the file `path`, as tools/experiments.sh
+    recorded them beside it (settings.json, under the stage's log name); None for a run from before
+    those records."""
+    return params.recorded_settings(os.path.dirname(path), f"log.{stage}")
+
+
 # the impact-zone shear stress the paper gives (kPa, at eps = 4%) per (cell, viscosity mPa s)
 PAPER_TAU = {("stiff", 1): 0.25, ("stiff", 10): 2.45, ("stiff", 1000): 180.0}
 FAILURES = (("qs", "failure-qs"), ("impact-1", "failure-impact-1"), ("impact-1000", "failure-impact-1000"))
@@ -152,7 +160,9 @@ def compression(rep):
     for a, lab in ((c05, "0.5 m/s"), (c025, "0.25 m/s")):
         if a is not None:
             plt.plot(a[:, A.CMP["eps"]] * 100, a[:, A.CMP["fbot"]] / 1e3, label=f"bottom plate, {lab}")
-    F_mem20, F_net20 = membrane_reference(c05)
+    # the wall of the run (G t0): its record, else Table I's (a run from before the records)
+    s = recorded(R.path("compress-0.5.dat", "compress-0.5"), "compress-0.5")
+    F_mem20, F_net20 = membrane_reference(c05, s["G"] * s["t0"] if s else G_T0)
     plt.xlabel("strain eps = DeltaX / 2R (%)")
     plt.ylabel("plate force (uN)")
     plt.legend()
@@ -179,10 +189,10 @@ def compression(rep):
                      "figure only"))
 
 
-def membrane_reference(c05):
-    """The membrane theory's compression curves (Neo-Hookean and the tether network's law) drawn
-    into the current figure, and their forces at eps = 19% as the run sees them (nan, nan when
-    the optional reference fails)."""
+def membrane_reference(c05, GT):
+    """The membrane theory's compression curves (Neo-Hookean and the tether network's law) of a
+    wall of G t0 = GT drawn into the current figure, and their forces at eps = 19% as the run sees
+    them (nan, nan when the optional reference fails)."""
     F_mem20 = F_net20 = float("nan")
     try:
         from .. import membrane  # the independent membrane-theory reference
@@ -198,13 +208,13 @@ def membrane_reference(c05):
             # value at the window's centre
             return A.window_mean(e05, np.interp(e05, strains, F), 0.19, 0.01)[0]
         # contents: the Tait fluid, bulk modulus rho0 c^2 = 7 kappa = 70 MPa
-        cur = membrane.compress_curve(G_T0, R0, Pturg, strains, bulk_modulus=7.0e4)
+        cur = membrane.compress_curve(GT, R0, Pturg, strains, bulk_modulus=7.0e4)
         F = [c["F"] for c in cur]
         plt.plot(strains * 100, np.array(F) / 1e3, "k--", label="membrane theory (tools/membrane.py)")
         F_mem20 = seen_as_sim(F)
         # the same membrane with the tether network's own law (1.5x the Neo-Hookean shear
         # modulus, the same equibiaxial tension): what the discrete wall should follow
-        cur = membrane.compress_curve(G_T0, R0, Pturg, strains, bulk_modulus=7.0e4,
+        cur = membrane.compress_curve(GT, R0, Pturg, strains, bulk_modulus=7.0e4,
                                       material="network")
         Fn = [c["F"] for c in cur]
         plt.plot(strains * 100, np.array(Fn) / 1e3, "k:", label="membrane, tether-network law")
@@ -503,8 +513,11 @@ def failure(rep):
 def failure_measure(R, lab, stage, p, r0, dt=0.001):
     """What analyse.failure measures, with the pressure before the break, the Bernoulli speed at
     it, and the fluid outside the wall before the break and at the end."""
-    # the escape margin is the fluid-wall contact distance r0 of the run the file comes from
-    f = A.failure(p, p[:-4] + ".dump", dt, run_setting(os.path.dirname(p), "r0", r0))
+    # the time step and the escape margin (the fluid-wall contact distance r0) of the run the file
+    # comes from: its record (tools/experiments.sh, settings.json); a run from before the records
+    # has run-info.txt's r0 (else the report's) and dt, in.failure's time step then
+    s = recorded(p, stage) or dict(r0=run_setting(os.path.dirname(p), "r0", r0), dt=dt)
+    f = A.failure(p, p[:-4] + ".dump", float(s["dt"]), float(s["r0"]))
     a = A.load(p)
     i = np.nonzero(a[:, A.IMP["nbroken"]] > 0)[0]
     # Bernoulli speed of the fluid leaving through an opening at the pressure before the break

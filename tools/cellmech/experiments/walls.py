@@ -186,7 +186,9 @@ def measure(run, r0=1.6, dt=0.001):
         p = os.path.join(run, f"failure-{lab}.dat")
         if not (os.path.exists(p) and _ok(run, f"failure-{lab}")):
             continue
-        f = A.failure(p, p[:-4] + ".dump", dt, r0)
+        # the run's own time step and r0 where tools/experiments.sh recorded them (settings.json)
+        s = params.recorded_settings(run, f"log.failure-{lab}") or dict(r0=r0, dt=dt)
+        f = A.failure(p, p[:-4] + ".dump", float(s["dt"]), float(s["r0"]))
         N["failure"][lab] = dict(
             eps_f=f["eps_f"], lat=f.get("lat_first_mean", NAN), lat_range=f.get("lat_first_range"),
             span=f.get("span_02"), speed=f.get("crack_speed", NAN), n_final=f.get("n_final", NAN),

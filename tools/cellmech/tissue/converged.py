@@ -69,7 +69,6 @@ KINDS = {
                     "and top gripped, at rest in the grips first, both grips moving apart after a smooth start",
                     "a tension here and there"),
 }
-KIND = KINDS["compress"]          # the kind being reported: main() sets it from its KIND argument
 
 # Parenchyma measurements (orders of magnitude, as the sources report them)
 LITERATURE = [
@@ -111,34 +110,35 @@ def converged_from(bal, rate):
     return start
 
 
-def measure(slow, fast):
-    """One condition's numbers from its slow run, its checks from both. The checks end at the
-    first wall rupture of either run: past it the curves part by the timing of the events."""
+def measure(kind, slow, fast):
+    """One condition's numbers from its slow run, its checks from both, judged as a kind (Kind).
+    The checks end at the first wall rupture of either run: past it the curves part by the timing
+    of the events."""
     f, ff = failure(slow), failure(fast)
     end = float(slow["strain"].max())
     hi = min(f["first"].get("wall rupture", end), ff["first"].get("wall rupture", end))
-    if KIND.to_peak:
+    if kind.to_peak:
         hi = min(hi, f["strain_at_peak"])
-    bal, en, _, v = Q.check(slow, KIND.start, hi, half=None, width=KIND.width)
-    rate = Q.rate_difference(fast, slow, KIND.start, hi, width=KIND.width)
+    bal, en, _, v = Q.check(slow, kind.start, hi, half=None, width=kind.width)
+    rate = Q.rate_difference(fast, slow, kind.start, hi, width=kind.width)
     worst = max((abs(r.difference) for r in rate if r.difference is not None), default=float("nan"))
     start = converged_from(bal, rate)
     # a modulus only of the intact block: its window ends before the first rupture (and in a
     # tension before the first debond)
-    intact = KIND.window[1] <= min(hi, f["first"].get("lamella debonding", end) if KIND.to_peak else hi)
+    intact = kind.window[1] <= min(hi, f["first"].get("lamella debonding", end) if kind.to_peak else hi)
     # the failure has converged when both speeds first rupture (or first debond) within 1% strain;
-    # a wall that ruptured before KIND.start burst under its own turgor (at the inflation or the plates'
+    # a wall that ruptured before kind.start burst under its own turgor (at the inflation or the plates'
     # first touch): that is no compression failure, and its peak no failure stress
     first = [min(g["first"].values()) if g["first"] else end for g in (f, ff)]
-    burst = f["first"].get("wall rupture", end) < KIND.start
+    burst = f["first"].get("wall rupture", end) < kind.start
     # a peak in the record's last 1% strain may be no peak: the stress was still rising at its end
     rising = f["strain_at_peak"] >= end - 0.01
-    return dict(P0=float(slow["P_mean_kPa"][0]), E=modulus(slow, *KIND.window) if intact else float("nan"),
+    return dict(P0=float(slow["P_mean_kPa"][0]), E=modulus(slow, *kind.window) if intact else float("nan"),
                 fail=f, fail_fast=ff, failure_converged=not burst and not rising and abs(first[0] - first[1]) <= 0.01,
                 burst=burst, rising=rising,
                 balance=v.numbers.get("balance"), ke=v.numbers.get("ke_over_work"), rate=worst,
-                start=start, judged=(KIND.start, hi),
-                converged=intact and start is not None and start <= KIND.window[0],
+                start=start, judged=(kind.start, hi),
+                converged=intact and start is not None and start <= kind.window[0],
                 verdict=("quasi-static" if v.quasistatic else "dynamic: " + ", ".join(v.failed))
                 + ("" if worst <= Q.TOL_RATE else "; curve moves with the speed"))
 
@@ -161,20 +161,20 @@ def stopped(folder):
     return err[:90] + "..." if len(err) > 90 else err
 
 
-def load_runs(runs):
+def load_runs(kind, runs):
     """{(pi, lam): (v, slow record, fast record, notes)} for the two slowest speeds v and 2v of each
-    condition found in RUNS; notes: the runs an error stopped early, where and why."""
+    condition of the kind (Kind) found in RUNS; notes: the runs an error stopped early, where and why."""
     out = {}
     for pi in PIS:
         for lam in LAMELLAE:
-            tag = f"{KIND.stage}{pi}-{lam}-"
-            rec = f"tissue-{KIND.stage}.dat"
+            tag = f"{kind.stage}{pi}-{lam}-"
+            rec = f"tissue-{kind.stage}.dat"
             speeds = sorted(float(n[len(tag):]) for n in os.listdir(runs)
                             if n.startswith(tag) and os.path.exists(f"{runs}/{n}/{rec}"))
             pairs = [(a, b) for a in speeds for b in speeds if abs(b - 2 * a) < 1e-9]
             if pairs:
                 a, b = pairs[0]
-                recs = [load(f"{runs}/{tag}{s:g}/{rec}", COMPRESS if KIND.stage == "compress" else TENSION)
+                recs = [load(f"{runs}/{tag}{s:g}/{rec}", COMPRESS if kind.stage == "compress" else TENSION)
                         for s in (a, b)]
                 notes = [f"the run at {s:g} m/s stopped at {rec['strain'].max():.1%} strain: {err}"
                          for s, rec in zip((a, b), recs) if (err := stopped(f"{runs}/{tag}{s:g}"))]
@@ -182,22 +182,22 @@ def load_runs(runs):
     return out
 
 
-def run_settings(runs, pi, lam, v):
+def run_settings(kind, runs, pi, lam, v):
     """The effective settings of the run of condition (pi, lam) at speed v (its settings.json; for
     a run older than it, the input's defaults with the named lamella)."""
-    return params.run_settings(f"{runs}/{KIND.stage}{pi}-{lam}-{v:g}", f"in.tissue-{KIND.stage}",
+    return params.run_settings(f"{runs}/{kind.stage}{pi}-{lam}-{v:g}", f"in.tissue-{kind.stage}",
                                params.lamellae()[lam])
 
 
-def lamella_settings(runs, data):
+def lamella_settings(kind, runs, data):
     """{lam: the settings of the first slow run with that lamella}: its sigl, Gl, lamf as run."""
     out = {}
     for (pi, lam), (v, *_) in data.items():
-        out.setdefault(lam, run_settings(runs, pi, lam, v))
+        out.setdefault(lam, run_settings(kind, runs, pi, lam, v))
     return out
 
 
-def figure(data, lams, path):
+def figure(kind, data, lams, path):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     for ax, lam in zip(axes, LAMELLAE):
         for n, pi in enumerate(PIS):
@@ -209,10 +209,10 @@ def figure(data, lams, path):
             ax.plot(fast["strain"], fast["stress_kPa"], color=c, lw=0.8, ls="--", label=f"Pi {pi} kPa, {2 * v:g} m/s")
         if lam in lams:
             ax.set_title(f"{lam} lamella (sigl {lams[lam]['sigl']:g} kPa, Gc {lams[lam]['Gl'] / 1000:g} J/m^2)", fontsize=10)
-        ax.set_xlabel("strain (closing of the plates / initial height)" if KIND.stage == "compress"
+        ax.set_xlabel("strain (closing of the plates / initial height)" if kind.stage == "compress"
                       else "strain (opening of the grips / initial height)")
         ax.legend(fontsize=7)
-    axes[0].set_ylabel(f"stress (top {KIND.ends[:-1]} force / initial cross-section, kPa)")
+    axes[0].set_ylabel(f"stress (top {kind.ends[:-1]} force / initial cross-section, kPa)")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
 
@@ -231,10 +231,10 @@ def judged(m):
     return f"{strain_pct(lo)}-{hi:.1%}" if hi > lo else "-"
 
 
-def table(rows):
-    head = (f"| Pi (kPa) | lamella | speed v (m/s) | P at start (kPa) | modulus {KIND.window[0]:.0%}-"
-            f"{KIND.window[1]:.0%} (kPa) | failure stress (kPa) | strain at peak | first rupture (v; 2v) | "
-            f"first debond | failure mode | judged | {KIND.ends} (worst) | KE/W (worst) | vs 2v (worst) | "
+def table(kind, rows):
+    head = (f"| Pi (kPa) | lamella | speed v (m/s) | P at start (kPa) | modulus {kind.window[0]:.0%}-"
+            f"{kind.window[1]:.0%} (kPa) | failure stress (kPa) | strain at peak | first rupture (v; 2v) | "
+            f"first debond | failure mode | judged | {kind.ends} (worst) | KE/W (worst) | vs 2v (worst) | "
             "converged from |\n|" + "---|" * 15)
     lines = [head]
     for (pi, lam), m in rows.items():
@@ -257,7 +257,7 @@ def stopped_text(rows):
             + "\n".join(notes) + "\n") if notes else ""
 
 
-def compare(rows):
+def compare(kind, rows):
     """The converged rows against the measured orders (LITERATURE): modulus 1-20 MPa, failure
     stress 0.3 MPa."""
     E = [m["E"] for m in rows.values() if m["converged"]]
@@ -270,7 +270,7 @@ def compare(rows):
              f"reaches the low end of the measured 1-20 MPa and lies up to {fmt(top, 2)} times below its top")
     return (f"The model's modulus, {span(E)} kPa, {where}, and its failure stress, "
             f"{span(peak)} kPa, {span([300 / p for p in peak])} "
-            f"times below apple's 0.3 MPa ({KIND.versus}).")
+            f"times below apple's 0.3 MPa ({kind.versus}).")
 
 
 def turgor_trend(rows):
@@ -323,7 +323,7 @@ def modes_words(rows):
     return ", ".join(f"{k} in {n}" for k, n in counts.items()) + f" of {len(rows)} conditions"
 
 
-def summary(rows, gen, lams, lamf):
+def summary(kind, rows, gen, lams, lamf):
     """The plain-language summary at the top: what ran, the main numbers, what passed."""
     conv = [m for m in rows.values() if m["converged"]]
     fconv = [m for m in rows.values() if m["failure_converged"]]
@@ -332,50 +332,50 @@ def summary(rows, gen, lams, lamf):
     pis = sorted({pi for pi, _ in rows}, reverse=True)
     speeds = sorted({m["v"] for m in rows.values()})
     ran = (f"{block_words(gen)}, glued by the middle lamella, was inflated at Pi "
-           f"{and_list(map(str, pis))} kPa with {lamella_words(lams)}, then {KIND.did} "
-           f"(walls rupture at the paper's critical stretch {lamf:g}) with {KIND.protocol}, "
+           f"{and_list(map(str, pis))} kPa with {lamella_words(lams)}, then {kind.did} "
+           f"(walls rupture at the paper's critical stretch {lamf:g}) with {kind.protocol}, "
            f"at v = {and_list(f'{v:g}' for v in speeds)} m/s (the "
            "speed column) and, as the rate evidence, at 2v (the ladder's last two rungs).")
-    passed = (f"The modulus converged in {len(conv)} of {len(rows)} conditions ({KIND.ends} within 5% and the curve "
-              f"within 5% of twice the speed in every {strain_pct(KIND.width)} window from the modulus window "
-              f"{'to the peak' if KIND.to_peak else 'on'}, the block still intact)"
+    passed = (f"The modulus converged in {len(conv)} of {len(rows)} conditions ({kind.ends} within 5% and the curve "
+              f"within 5% of twice the speed in every {strain_pct(kind.width)} window from the modulus window "
+              f"{'to the peak' if kind.to_peak else 'on'}, the block still intact)"
               + (f": {span(Es)} kPa." if conv else ".")
               + f" The failure converged in {len(fconv)} (the first rupture or debond at both speeds within 1% "
-              f"strain, the walls intact at {strain_pct(KIND.start)})" + (f": failure stress {span(peaks)} kPa." if fconv else "."))
-    return " ".join(x for x in (ran, passed, f"First failure: {modes_words(rows)}.", compare(rows),
+              f"strain, the walls intact at {strain_pct(kind.start)})" + (f": failure stress {span(peaks)} kPa." if fconv else "."))
+    return " ".join(x for x in (ran, passed, f"First failure: {modes_words(rows)}.", compare(kind, rows),
                                 "Every number is from the run at v; a condition that has not converged is a rate "
                                 "study, and its row says so.") if x)
 
 
-def text(rows, info, gen, name, lams):
+def text(kind, rows, info, gen, name, lams):
     lamf = next(iter(lams.values()))["lamf"]
     lit = "\n".join(f"| {a} | {b} | {c} |" for a, b, c in LITERATURE)
-    return f"""# {KIND.title}
+    return f"""# {kind.title}
 
 *Generated by `tools/tissue-converged.sh` ({info}); do not edit by hand.*
 
-**Summary.** {summary(rows, gen, lams, lamf)}
+**Summary.** {summary(kind, rows, gen, lams, lamf)}
 
 ![stress-strain]({name}.png)
 
-{table(rows)}
+{table(kind, rows)}
 {stopped_text(rows)}
-*Modulus*: slope of a straight line through the stress over {KIND.window[0]:.0%}-{KIND.window[1]:.0%}
+*Modulus*: slope of a straight line through the stress over {kind.window[0]:.0%}-{kind.window[1]:.0%}
 strain. *Failure stress*: the peak of the stress over 1% strain windows, with its strain. *First
 rupture*: at both speeds; where they differ, the failure strain has not converged with the speed
 (the checks end at the earlier one: past it the two curves part by the timing of the events).
 *Failure mode*: which kind of failure begins first, wall rupture (a tether breaks) or lamella
-debonding (a lamella bond lets go); *burst before loading*: a wall ruptured before {strain_pct(KIND.start)} strain,
+debonding (a lamella bond lets go); *burst before loading*: a wall ruptured before {strain_pct(kind.start)} strain,
 under the cell's own turgor (the inflated wall's stretch near the critical 1.04), so the block had
-failed before the {KIND.ends} loaded it, and its row gives no failure stress; *> X*: the stress was still
+failed before the {kind.ends} loaded it, and its row gives no failure stress; *> X*: the stress was still
 rising at the record's end, so X bounds the failure stress from below and the row's failure has not
-converged. *Judged*: from {strain_pct(KIND.start)} strain to the first rupture of either run{' or the peak stress of the run at v, whichever comes first' if KIND.to_peak else ''}.
-*{KIND.ends.capitalize()}*: the largest (F_top - F_bottom) / mean over {strain_pct(KIND.width)} windows there; *KE/W*: the largest kinetic
-energy against the {KIND.ends}' work (printed, not judged); *vs 2v*: the largest difference of the
-window-mean {KIND.ends[:-1]} force between the two speeds. *Converged from*: the strain from which every {strain_pct(KIND.width)}
+converged. *Judged*: from {strain_pct(kind.start)} strain to the first rupture of either run{' or the peak stress of the run at v, whichever comes first' if kind.to_peak else ''}.
+*{kind.ends.capitalize()}*: the largest (F_top - F_bottom) / mean over {strain_pct(kind.width)} windows there; *KE/W*: the largest kinetic
+energy against the {kind.ends}' work (printed, not judged); *vs 2v*: the largest difference of the
+window-mean {kind.ends[:-1]} force between the two speeds. *Converged from*: the strain from which every {strain_pct(kind.width)}
 window balances within 5% and agrees with 2v within 5%; a condition counts as converged when
 that is at or below the modulus window (no modulus where the block has ruptured before the window
-ends{', or its lamella has begun to let go: a pull loads it directly' if KIND.to_peak else ''}).
+ends{', or its lamella has begun to let go: a pull loads it directly' if kind.to_peak else ''}).
 
 ## Side by side with parenchyma
 
@@ -385,7 +385,7 @@ ends{', or its lamella has begun to let go: a pull loads it directly' if KIND.to
 
 What the model gives, and why it differs:
 
-* **Modulus and failure stress.** {compare(rows)} The wall is the paper's stiff single cell's
+* **Modulus and failure stress.** {compare(kind, rows)} The wall is the paper's stiff single cell's
   (Table I: G = 800 MPa, thickness 0.126 um, G t0 = 100 N/m) on cells of about {cell_size(gen):.0f} um, not a wall fitted to
   apple or potato; a block of {gen['cells']} cells with free faces all round is not a bulk tissue
   ({surface(gen)}); and the coarse wall ({gen['wall_nodes_per_cell']} nodes) and fluid (about {fluid_per_cell(gen):.0f} particles)
@@ -416,37 +416,36 @@ def surface(gen):
             f"{gen['cells'] - inner} of its {gen['cells']} cells lie on its surface, free to bulge sideways")
 
 
-def run_info(runs):
+def run_info(kind, runs):
     """What ran, from RUNS/run-info.txt: the driver's lines of this kind (a folder may hold both
     experiments on the same inflated blocks; the tension's lines start with EXP=tension)."""
     if not os.path.exists(f"{runs}/run-info.txt"):
         return runs
     lines = [ln for ln in open(f"{runs}/run-info.txt").read().split("\n") if ln]
-    return "; ".join(ln for ln in lines if ln.startswith("EXP=tension") == (KIND.stage == "tension"))
+    return "; ".join(ln for ln in lines if ln.startswith("EXP=tension") == (kind.stage == "tension"))
 
 
 def main(argv=None):
-    global KIND
     args = argv or sys.argv[1:]
     runs, report = args[:2]
     name = args[2] if len(args) > 2 else "tissue-quasistatic"
-    kind = args[3] if len(args) > 3 else "compress"
-    if kind not in KINDS:
-        raise SystemExit(f"converged: KIND {kind}: expected one of {', '.join(KINDS)}")
-    KIND = KINDS[kind]
-    data = load_runs(runs)
+    which = args[3] if len(args) > 3 else "compress"
+    if which not in KINDS:
+        raise SystemExit(f"converged: KIND {which}: expected one of {', '.join(KINDS)}")
+    kind = KINDS[which]
+    data = load_runs(kind, runs)
     if not data:
         raise SystemExit(f"converged: no condition with runs at v and 2v in {runs}")
     rows = {}
     for key, (v, slow, fast, notes) in data.items():
-        rows[key] = dict(measure(slow, fast), v=v, notes=notes)
-    info = run_info(runs)
+        rows[key] = dict(measure(kind, slow, fast), v=v, notes=notes)
+    info = run_info(kind, runs)
     gen = gen_stats(f"{runs}/gen/block.json")
-    lams = lamella_settings(runs, data)
-    figure(data, lams, f"{report}/{name}.png")
+    lams = lamella_settings(kind, runs, data)
+    figure(kind, data, lams, f"{report}/{name}.png")
     with open(f"{report}/{name}.md", "w") as f:
-        f.write(text(rows, info, gen, name, lams))
-    print(table(rows))
+        f.write(text(kind, rows, info, gen, name, lams))
+    print(table(kind, rows))
 
 
 if __name__ == "__main__":
