@@ -191,3 +191,20 @@ def test_report_reads_the_settings_of_each_run_from_its_record(tmp_path, monkeyp
         ("log.failure-impact-1", "in.failure", dict(r0=1.6, vplate=5, mu=1)),
         ("log.compress-0.5", "in.compress", dict(r0=1.6, vplate=0.5))])
     assert same == old and same_md == old_md.replace("run-old", "run-same")
+
+
+def test_failure_rows_without_a_crack_record():
+    """A quasistatic failure run without its dump (tests run it short) has no crack to follow: the
+    row says so instead of failing on the missing span."""
+    class Rep:
+        R = type("R", (), {"mark": staticmethod(lambda name: "")})
+        rows, key = [], {}
+    f = dict(eps_f=0.134, lat_first_mean=56.6, t_90=0.3, p_f=503.0, v_bernoulli=31.7)
+    report.failure_rows(Rep, {"qs": f})
+    origin = [r for r in Rep.rows if r[0] == "failure, quasistatic: origin"]
+    assert len(origin) == 1 and "crack not followed (no dump)" in origin[0][2], origin
+    f.update(span_02=(-23.0, 76.0), crack_speed=355.0)
+    Rep.rows = []
+    report.failure_rows(Rep, {"qs": f})
+    origin = [r for r in Rep.rows if r[0] == "failure, quasistatic: origin"]
+    assert "the crack spans -23 to 76 deg (355 m/s)" in origin[0][2], origin
