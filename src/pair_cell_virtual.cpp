@@ -89,6 +89,12 @@ void PairCellVirtual::compute(int eflag, int vflag)
         if (b >= nlocal) return;    // only with newton_bond off; init_style forbids it
         repel_fluid(a, b, c, eflag);
       });
+  // a pass of its own: a run without adhesion does what it did, as fast
+  if (adhering)
+    CellMech::for_each_wall_triangle(neighbor->anglelist, neighbor->nanglelist,
+                                     [&](int, int a, int b, int c) {
+                                       if (b < nlocal) hold_fluid(a, b, c, eflag);
+                                     });
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
@@ -118,12 +124,10 @@ void PairCellVirtual::check_reach(int a, int b, int c, const double *B)
 }
 
 // the virtual particle of triangle a-b-c (central node b) repels the fluid in b's neighbour list
-// and holds that of its own cell where it adheres
 void PairCellVirtual::repel_fluid(int a, int b, int c, int eflag)
 {
   double **x = atom->x;
   double **v = atom->v;
-  double **f = atom->f;
   int *type = atom->type;
   double B[3], VB[3];
   for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
@@ -148,60 +152,93 @@ void PairCellVirtual::repel_fluid(int a, int b, int c, int eflag)
     const double dz = x[k][2] - B[2];
     const double rsq = dx * dx + dy * dy + dz * dz;
     const double r0bk = r0[btype][ktype];
-    // a wall holds the fluid of its own cell only: fluid that left a broken cell is merely kept
-    // out of the others
-    const bool own =
-        adhering && fa[btype][ktype] > 0.0 && CellMech::same_cell(atom->molecule, k, b);
-    const double cut = own ? r0bk + delta[btype][ktype] : r0bk;
-    if (rsq >= cut * cut) continue;
+    if (rsq >= r0bk * r0bk) continue;
+    // the virtual particle's velocity only where fluid touches it: most triangles have none,
+    // and its three divisions are a fair part of a triangle's cost
+    if (!have_vb) {
+      for (int d = 0; d < 3; d++) VB[d] = (v[a][d] + v[b][d] + v[c][d]) / 3.0;
+      have_vb = true;
+    }
 
     double fpair = repulsion84_fpair(f0[btype][ktype], r0bk, rsq);
-    // damping in contact only. The virtual particle's velocity only where fluid touches it: most
-    // triangles have none, and its three divisions are a fair part of a triangle's cost
-    if (gamma[btype][ktype] > 0.0 && rsq < r0bk * r0bk) {
-      if (!have_vb) {
-        for (int d = 0; d < 3; d++) VB[d] = (v[a][d] + v[b][d] + v[c][d]) / 3.0;
-        have_vb = true;
-      }
+    if (gamma[btype][ktype] > 0.0) {
       const double dot = dx * (v[k][0] - VB[0]) + dy * (v[k][1] - VB[1]) + dz * (v[k][2] - VB[2]);
       fpair += damping_fpair(gamma[btype][ktype], dot, rsq);
     }
-    if (own) fpair += adhesion_fpair(fa[btype][ktype], r0bk, delta[btype][ktype], rsq);
-    const double fx = fpair * dx, fy = fpair * dy, fz = fpair * dz;
-    f[k][0] += fx;
-    f[k][1] += fy;
-    f[k][2] += fz;
-    for (int node : {a, b, c}) {
-      f[node][0] -= fx / 3.0;
-      f[node][1] -= fy / 3.0;
-      f[node][2] -= fz / 3.0;
+    const double del[3] = {dx, dy, dz};
+    tally_contact(k, a, b, c, del, fpair,
+                  eflag ? repulsion84_energy(f0[btype][ktype], r0bk, rsq) : 0.0, eflag);
+  }
+}
+
+// The virtual particle of triangle a-b-c holds the fluid of its own cell only (the molecule of
+// the central node b): fluid that left a broken cell is merely kept out of the others.
+void PairCellVirtual::hold_fluid(int a, int b, int c, int eflag)
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const tagint *molecule = atom->molecule;
+  double B[3];
+  for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+  const int btype = type[b];
+  int *jlist = list->firstneigh[b];
+  const int jnum = list->numneigh[b];
+
+  for (int jj = 0; jj < jnum; jj++) {
+    const int k = jlist[jj] & NEIGHMASK;
+    const int ktype = type[k];
+    // fa is zero for type pairs without coefficients
+    const double fabk = fa[btype][ktype];
+    if (fabk <= 0.0 || !CellMech::same_cell(molecule, k, b)) continue;
+    const double del[3] = {x[k][0] - B[0], x[k][1] - B[1], x[k][2] - B[2]};
+    const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+    const double r0bk = r0[btype][ktype], dbk = delta[btype][ktype];
+    if (rsq >= (r0bk + dbk) * (r0bk + dbk)) continue;
+    // within r0 no force, only the well's depth in the energy
+    tally_contact(k, a, b, c, del, adhesion_fpair(fabk, r0bk, dbk, rsq),
+                  eflag ? adhesion_energy(fabk, r0bk, dbk, rsq) : 0.0, eflag);
+  }
+}
+
+// the force fpair del on fluid particle k (del = x_k - B), -1/3 of it on each node of the
+// triangle a-b-c, and the contact's energy e (if eflag) and virial
+void PairCellVirtual::tally_contact(int k, int a, int b, int c, const double *del, double fpair,
+                                    double e, int eflag)
+{
+  double **f = atom->f;
+  const double dx = del[0], dy = del[1], dz = del[2];
+  const double fx = fpair * dx, fy = fpair * dy, fz = fpair * dz;
+  f[k][0] += fx;
+  f[k][1] += fy;
+  f[k][2] += fz;
+  for (int node : {a, b, c}) {
+    f[node][0] -= fx / 3.0;
+    f[node][1] -= fy / 3.0;
+    f[node][2] -= fz / 3.0;
+  }
+  if (eflag) {
+    if (eflag_global) eng_vdwl += e;
+    if (eflag_atom) {
+      eatom[k] += 0.5 * e;
+      for (int node : {a, b, c}) eatom[node] += e / 6.0;
     }
-    if (eflag) {
-      double e = repulsion84_energy(f0[btype][ktype], r0bk, rsq);
-      if (own) e += adhesion_energy(fa[btype][ktype], r0bk, delta[btype][ktype], rsq);
-      if (eflag_global) eng_vdwl += e;
-      if (eflag_atom) {
-        eatom[k] += 0.5 * e;
-        for (int node : {a, b, c}) eatom[node] += e / 6.0;
-      }
+  }
+  if (vflag_atom) {
+    // the interaction's virial (x_k - B) F_k, split as its energy: half to the fluid
+    // particle, a sixth to each node (sums to the global virial)
+    const double vv[6] = {dx * fx, dy * fy, dz * fz, dx * fy, dx * fz, dy * fz};
+    for (int q = 0; q < 6; q++) {
+      vatom[k][q] += 0.5 * vv[q];
+      for (int node : {a, b, c}) vatom[node][q] += vv[q] / 6.0;
     }
-    if (vflag_atom) {
-      // the interaction's virial (x_k - B) F_k, split as its energy: half to the fluid
-      // particle, a sixth to each node (sums to the global virial)
-      const double vv[6] = {dx * fx, dy * fy, dz * fz, dx * fy, dx * fz, dy * fz};
-      for (int q = 0; q < 6; q++) {
-        vatom[k][q] += 0.5 * vv[q];
-        for (int node : {a, b, c}) vatom[node][q] += vv[q] / 6.0;
-      }
-    }
-    if (vflag_global && !vflag_fdotr) {
-      virial[0] += dx * fx;
-      virial[1] += dy * fy;
-      virial[2] += dz * fz;
-      virial[3] += dx * fy;
-      virial[4] += dx * fz;
-      virial[5] += dy * fz;
-    }
+  }
+  if (vflag_global && !vflag_fdotr) {
+    virial[0] += dx * fx;
+    virial[1] += dy * fy;
+    virial[2] += dz * fz;
+    virial[3] += dx * fy;
+    virial[4] += dx * fz;
+    virial[5] += dy * fz;
   }
 }
 

@@ -49,6 +49,9 @@ class PairCellVirtual : public PairCellLJ84 {
   static constexpr double MIN_R0_EDGE = 0.5;
   void check_contact_distance();
   void repel_fluid(int a, int b, int c, int eflag);
+  void hold_fluid(int a, int b, int c, int eflag);
+  void tally_contact(int k, int a, int b, int c, const double *del, double fpair, double e,
+                     int eflag);
   void check_reach(int a, int b, int c, const double *B);
 };
 
