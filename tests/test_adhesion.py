@@ -8,7 +8,8 @@ it), and a fan of six triangles around one node with fluid of both cells above i
 of two ranks. Everything moves (random velocities, contact damping gamma on). Checked:
  (i)   the force on each lone cell-1 particle against the law (8-4 repulsion + damping within r0,
        adhesion to r0 + delta), relative 1e-10; each atom's force, the energy and the virial of
-       the whole system against the same law summed here;
+       the whole system against the same law summed here, and the per-atom energies and virials
+       summed;
  (ii)  the cell-2 particles: the repulsion within r0, nothing in (r0, r0 + delta);
  (iii) total force and torque zero to round-off;
  (iv)  a cell-1 particle released in the well bounces off the wall and back, energy conserved in
@@ -118,7 +119,11 @@ neighbor        0.3 bin
 
 FORCES = """
 compute         vir all pressure NULL virial
-thermo_style    custom step pe vol c_vir[1] c_vir[2] c_vir[3] c_vir[4] c_vir[5] c_vir[6]
+# per atom: energy and virial (compute stress/atom is minus the virial), summed
+compute         pea all pe/atom
+compute         sa all stress/atom NULL virial
+compute         sums all reduce sum c_pea c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6]
+thermo_style    custom step pe vol c_vir[1] c_vir[2] c_vir[3] c_vir[4] c_vir[5] c_vir[6] c_sums[*]
 thermo_modify   format float %.17g
 dump            d all custom 1 {dump} id x y z fx fy fz
 dump_modify     d format float %.17g sort id
@@ -236,6 +241,14 @@ def test_forces_energy_virial_and_ranks(rundir):
     T.check("every atom's force of the law", ferr < 1e-10, f"{ferr:.1e}")
     T.check("energy of the law", eerr < 1e-12, f"{eerr:.1e}")
     T.check("virial of the law to round-off", verr < 16 * EPS * xf, f"{verr:.1e}")
+    # per atom: half of each contact to its particle, a sixth to each node; the sums are those of
+    # the contacts, in another order
+    peatom, vatom = row[9], -np.array(row[10:16])
+    aerr = abs(peatom - eref) / abs(eref)
+    vaerr = np.abs(vatom - vref).max() / np.abs(vref).max()
+    print(f"per-atom energies sum to {aerr:.1e} of the energy, per-atom virials to {vaerr:.1e}")
+    T.check("per-atom energies sum to the energy", aerr < len(ids) * EPS, f"{aerr:.1e}")
+    T.check("per-atom virials sum to the virial", vaerr < len(ids) * EPS, f"{vaerr:.1e}")
 
     # (iii) momentum: N atoms, each sum to round-off
     n = len(ids)
