@@ -33,7 +33,8 @@ using namespace CellPhysics;
 /* ---------------------------------------------------------------------- */
 
 PairCellLJ84::PairCellLJ84(LAMMPS *_lmp, const char *name) :
-    Pair(_lmp), style_name(name), f0(nullptr), r0(nullptr), gamma(nullptr)
+    Pair(_lmp), style_name(name), coeff_args("f0 r0 [gamma]"), f0(nullptr), r0(nullptr),
+    gamma(nullptr)
 {
   writedata = 1;
 }
@@ -144,9 +145,9 @@ void PairCellLJ84::coeff(int narg, char **arg)
 {
   if (narg != 4 && narg != 5)
     error->all(FLERR,
-               "Incorrect number of args for pair_coeff {}: expected "
-               "'pair_coeff I J f0 r0 [gamma]', got {} arguments",
-               style_name, narg);
+               "Incorrect number of args for pair_coeff {}: expected 'pair_coeff I J {}', got {} "
+               "arguments",
+               style_name, coeff_args, narg);
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -217,14 +218,20 @@ double PairCellLJ84::init_one(int i, int j)
 void PairCellLJ84::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
+  const auto extra = extra_coeffs();
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
-      fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      if (setflag[i][j]) {
+      int record = setflag[i][j];
+      for (double **e : extra)
+        if (record && e[i][j] != 0.0) record = 2;
+      fwrite(&record, sizeof(int), 1, fp);
+      if (record) {
         fwrite(&f0[i][j], sizeof(double), 1, fp);
         fwrite(&r0[i][j], sizeof(double), 1, fp);
         fwrite(&gamma[i][j], sizeof(double), 1, fp);
       }
+      if (record == 2)
+        for (double **e : extra) fwrite(&e[i][j], sizeof(double), 1, fp);
     }
 }
 
@@ -232,12 +239,15 @@ void PairCellLJ84::read_restart(FILE *fp)
 {
   read_restart_settings(fp);
   allocate();
+  const auto extra = extra_coeffs();
   const int me = comm->me;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      if (setflag[i][j]) {
+      int record = 0;
+      if (me == 0) utils::sfread(FLERR, &record, sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&record, 1, MPI_INT, 0, world);
+      setflag[i][j] = record ? 1 : 0;
+      if (record) {
         if (me == 0) {
           utils::sfread(FLERR, &f0[i][j], sizeof(double), 1, fp, nullptr, error);
           utils::sfread(FLERR, &r0[i][j], sizeof(double), 1, fp, nullptr, error);
@@ -246,6 +256,12 @@ void PairCellLJ84::read_restart(FILE *fp)
         MPI_Bcast(&f0[i][j], 1, MPI_DOUBLE, 0, world);
         MPI_Bcast(&r0[i][j], 1, MPI_DOUBLE, 0, world);
         MPI_Bcast(&gamma[i][j], 1, MPI_DOUBLE, 0, world);
+      }
+      for (double **e : extra) {
+        e[i][j] = 0.0;
+        if (record == 2 && me == 0)
+          utils::sfread(FLERR, &e[i][j], sizeof(double), 1, fp, nullptr, error);
+        MPI_Bcast(&e[i][j], 1, MPI_DOUBLE, 0, world);
       }
     }
 }

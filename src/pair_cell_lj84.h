@@ -15,6 +15,8 @@ PairStyle(cell/lj84,PairCellLJ84);
 
 #include "pair.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairCellLJ84 : public Pair {
@@ -35,9 +37,15 @@ class PairCellLJ84 : public Pair {
 
  protected:
   const char *style_name;    // for messages: cell/virtual shares the coefficients and their checks
+  const char *coeff_args;    // the coefficients after 'pair_coeff I J', for messages
   double **f0, **r0, **gamma;
 
-  void allocate();
+  virtual void allocate();
+  // per-type-pair coefficients a derived style keeps beyond f0, r0 and gamma (cell/virtual's
+  // adhesion), all zero where unused: in the restart file they follow gamma in a record marked 2
+  // instead of setflag's 1, only where one of them is not zero, so that the files without them
+  // (every cell/lj84 file, and those written before they existed) keep their layout
+  virtual std::vector<double **> extra_coeffs() { return {}; }
   void require_ghost_velocities();    // if any contact is damped
 };
 

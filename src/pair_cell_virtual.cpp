@@ -15,12 +15,16 @@
    ghost nodes and ghost fluid reach their owners by the reverse
    communication of newton_pair on.
    pair_coeff I J f0 r0 [gamma] (as cell/lj84): triangles whose central node
-   has type I (or J) repel particles of type J (or I).
+   has type I (or J) repel particles of type J (or I). With adhere Fa delta
+   they also hold the particles of their own cell (molecule) out to
+   r0 + delta (Eq. A1, physics/adhesion.h), which grows the cutoff to
+   r0 + delta + reach.
 ------------------------------------------------------------------------- */
 
 #include "pair_cell_virtual.h"
 
 #include "cell_checks.h"
+#include "cell_coeff.h"
 #include "cell_compat.h"
 
 #include "atom.h"
@@ -32,6 +36,7 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "physics/adhesion.h"
 #include "physics/damping.h"
 #include "physics/lj84.h"
 #include "update.h"
@@ -42,13 +47,33 @@
 using namespace LAMMPS_NS;
 using namespace CellPhysics;
 
-PairCellVirtual::PairCellVirtual(LAMMPS *_lmp) : PairCellLJ84(_lmp, "cell/virtual"), reach(0.0)
+PairCellVirtual::PairCellVirtual(LAMMPS *_lmp) :
+    PairCellLJ84(_lmp, "cell/virtual"), reach(0.0), fa(nullptr), delta(nullptr), adhering(false)
 {
+  coeff_args = "f0 r0 [gamma] [adhere Fa delta]";
   // forces act on three nodes per virtual particle; the fdotr virial over all owned and ghost
   // atoms is exact for them. A pair of atoms means nothing here: no single(), no pair_write,
   // and the coefficients are between wall and fluid types, not per type for write_data.
   single_enable = 0;
   writedata = 0;
+}
+
+PairCellVirtual::~PairCellVirtual()
+{
+  if (allocated) {
+    memory->destroy(fa);
+    memory->destroy(delta);
+  }
+}
+
+void PairCellVirtual::allocate()
+{
+  PairCellLJ84::allocate();
+  const int np1 = atom->ntypes + 1;
+  memory->create(fa, np1, np1, "pair:fa");
+  memory->create(delta, np1, np1, "pair:delta");
+  for (int i = 0; i < np1; i++)
+    for (int j = 0; j < np1; j++) fa[i][j] = delta[i][j] = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -64,6 +89,12 @@ void PairCellVirtual::compute(int eflag, int vflag)
         if (b >= nlocal) return;    // only with newton_bond off; init_style forbids it
         repel_fluid(a, b, c, eflag);
       });
+  // a pass of its own: a run without adhesion does what it did, as fast
+  if (adhering)
+    CellMech::for_each_wall_triangle(neighbor->anglelist, neighbor->nanglelist,
+                                     [&](int, int a, int b, int c) {
+                                       if (b < nlocal) hold_fluid(a, b, c, eflag);
+                                     });
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
@@ -97,7 +128,6 @@ void PairCellVirtual::repel_fluid(int a, int b, int c, int eflag)
 {
   double **x = atom->x;
   double **v = atom->v;
-  double **f = atom->f;
   int *type = atom->type;
   double B[3], VB[3];
   for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
@@ -135,40 +165,80 @@ void PairCellVirtual::repel_fluid(int a, int b, int c, int eflag)
       const double dot = dx * (v[k][0] - VB[0]) + dy * (v[k][1] - VB[1]) + dz * (v[k][2] - VB[2]);
       fpair += damping_fpair(gamma[btype][ktype], dot, rsq);
     }
-    const double fx = fpair * dx, fy = fpair * dy, fz = fpair * dz;
-    f[k][0] += fx;
-    f[k][1] += fy;
-    f[k][2] += fz;
-    for (int node : {a, b, c}) {
-      f[node][0] -= fx / 3.0;
-      f[node][1] -= fy / 3.0;
-      f[node][2] -= fz / 3.0;
+    const double del[3] = {dx, dy, dz};
+    tally_contact(k, a, b, c, del, fpair,
+                  eflag ? repulsion84_energy(f0[btype][ktype], r0bk, rsq) : 0.0, eflag);
+  }
+}
+
+// The virtual particle of triangle a-b-c holds the fluid of its own cell only (the molecule of
+// the central node b): fluid that left a broken cell is merely kept out of the others.
+void PairCellVirtual::hold_fluid(int a, int b, int c, int eflag)
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const tagint *molecule = atom->molecule;
+  double B[3];
+  for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+  const int btype = type[b];
+  int *jlist = list->firstneigh[b];
+  const int jnum = list->numneigh[b];
+
+  for (int jj = 0; jj < jnum; jj++) {
+    const int k = jlist[jj] & NEIGHMASK;
+    const int ktype = type[k];
+    // fa is zero for type pairs without coefficients
+    const double fabk = fa[btype][ktype];
+    if (fabk <= 0.0 || !CellMech::same_cell(molecule, k, b)) continue;
+    const double del[3] = {x[k][0] - B[0], x[k][1] - B[1], x[k][2] - B[2]};
+    const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+    const double r0bk = r0[btype][ktype], dbk = delta[btype][ktype];
+    if (rsq >= (r0bk + dbk) * (r0bk + dbk)) continue;
+    // within r0 no force, only the well's depth in the energy
+    tally_contact(k, a, b, c, del, adhesion_fpair(fabk, r0bk, dbk, rsq),
+                  eflag ? adhesion_energy(fabk, r0bk, dbk, rsq) : 0.0, eflag);
+  }
+}
+
+// the force fpair del on fluid particle k (del = x_k - B), -1/3 of it on each node of the
+// triangle a-b-c, and the contact's energy e (if eflag) and virial
+void PairCellVirtual::tally_contact(int k, int a, int b, int c, const double *del, double fpair,
+                                    double e, int eflag)
+{
+  double **f = atom->f;
+  const double dx = del[0], dy = del[1], dz = del[2];
+  const double fx = fpair * dx, fy = fpair * dy, fz = fpair * dz;
+  f[k][0] += fx;
+  f[k][1] += fy;
+  f[k][2] += fz;
+  for (int node : {a, b, c}) {
+    f[node][0] -= fx / 3.0;
+    f[node][1] -= fy / 3.0;
+    f[node][2] -= fz / 3.0;
+  }
+  if (eflag) {
+    if (eflag_global) eng_vdwl += e;
+    if (eflag_atom) {
+      eatom[k] += 0.5 * e;
+      for (int node : {a, b, c}) eatom[node] += e / 6.0;
     }
-    if (eflag) {
-      const double e = repulsion84_energy(f0[btype][ktype], r0bk, rsq);
-      if (eflag_global) eng_vdwl += e;
-      if (eflag_atom) {
-        eatom[k] += 0.5 * e;
-        for (int node : {a, b, c}) eatom[node] += e / 6.0;
-      }
+  }
+  if (vflag_atom) {
+    // the interaction's virial (x_k - B) F_k, split as its energy: half to the fluid
+    // particle, a sixth to each node (sums to the global virial)
+    const double vv[6] = {dx * fx, dy * fy, dz * fz, dx * fy, dx * fz, dy * fz};
+    for (int q = 0; q < 6; q++) {
+      vatom[k][q] += 0.5 * vv[q];
+      for (int node : {a, b, c}) vatom[node][q] += vv[q] / 6.0;
     }
-    if (vflag_atom) {
-      // the interaction's virial (x_k - B) F_k, split as its energy: half to the fluid
-      // particle, a sixth to each node (sums to the global virial)
-      const double vv[6] = {dx * fx, dy * fy, dz * fz, dx * fy, dx * fz, dy * fz};
-      for (int q = 0; q < 6; q++) {
-        vatom[k][q] += 0.5 * vv[q];
-        for (int node : {a, b, c}) vatom[node][q] += vv[q] / 6.0;
-      }
-    }
-    if (vflag_global && !vflag_fdotr) {
-      virial[0] += dx * fx;
-      virial[1] += dy * fy;
-      virial[2] += dz * fz;
-      virial[3] += dx * fy;
-      virial[4] += dx * fz;
-      virial[5] += dy * fz;
-    }
+  }
+  if (vflag_global && !vflag_fdotr) {
+    virial[0] += dx * fx;
+    virial[1] += dy * fy;
+    virial[2] += dz * fz;
+    virial[3] += dx * fy;
+    virial[4] += dx * fz;
+    virial[5] += dy * fz;
   }
 }
 
@@ -245,6 +315,47 @@ void PairCellVirtual::settings(int narg, char **arg)
   CellMech::require_magnitude(lmp, "pair_style cell/virtual", "reach", reach);
 }
 
+/* ----------------------------------------------------------------------
+   pair_coeff I J f0 r0 [gamma] [adhere Fa delta]
+------------------------------------------------------------------------- */
+
+void PairCellVirtual::coeff(int narg, char **arg)
+{
+  // f0 r0 [gamma] as cell/lj84; keywords follow
+  const int nplain = (narg > 4 && utils::is_double(arg[4])) ? 5 : MIN(narg, 4);
+  PairCellLJ84::coeff(nplain, arg);
+
+  const std::string cmd = "pair_coeff cell/virtual";
+  double fa_one = 0.0, delta_one = 0.0;
+  for (int iarg = nplain; iarg < narg; iarg += 3) {
+    if (strcmp(arg[iarg], "adhere") != 0)
+      error->all(FLERR, "{}: unknown keyword '{}' (expected 'pair_coeff I J {}')", cmd, arg[iarg],
+                 coeff_args);
+    if (iarg + 2 >= narg)
+      error->all(FLERR, "{}: keyword adhere needs two values, Fa delta; got {}", cmd,
+                 narg - iarg - 1);
+    using CellMech::Sign;
+    fa_one =
+        CellMech::coefficient(lmp, cmd, "adhesion strength Fa", arg[iarg + 1], Sign::NON_NEGATIVE);
+    delta_one =
+        CellMech::coefficient(lmp, cmd, "adhesion range delta", arg[iarg + 2], Sign::POSITIVE);
+  }
+  if (fa_one > 0.0 && !atom->molecule_flag)
+    error->all(FLERR,
+               "{}: adhere Fa = {} needs molecule IDs, which tell a cell's own wall from the "
+               "others; use an atom style with molecules (atom_style molecular)",
+               cmd, fa_one);
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      fa[i][j] = fa_one;
+      delta[i][j] = delta_one;
+    }
+}
+
 void PairCellVirtual::init_style()
 {
   CellMech::require_unit_consistency(lmp, "Pair style cell/virtual");
@@ -265,9 +376,13 @@ void PairCellVirtual::init_style()
 
   const int ntypes = atom->ntypes;
   listed.assign(ntypes + 1, 0);
+  adhering = false;
   for (int i = 1; i <= ntypes; i++)
     for (int j = 1; j <= ntypes; j++)
-      if (setflag[MIN(i, j)][MAX(i, j)]) listed[i] = 1;
+      if (setflag[MIN(i, j)][MAX(i, j)]) {
+        listed[i] = 1;
+        if (fa[MIN(i, j)][MAX(i, j)] > 0.0) adhering = true;
+      }
 }
 
 double PairCellVirtual::init_one(int i, int j)
@@ -277,8 +392,11 @@ double PairCellVirtual::init_one(int i, int j)
   f0[j][i] = f0[i][j];
   r0[j][i] = r0[i][j];
   gamma[j][i] = gamma[i][j];
+  fa[j][i] = fa[i][j];
+  delta[j][i] = delta[i][j];
   setflag[j][i] = setflag[i][j];
-  return r0[i][j] + reach;
+  // fluid within r0 (+ delta where it adheres) of a barycentre within reach of the central node
+  return r0[i][j] + (fa[i][j] > 0.0 ? delta[i][j] : 0.0) + reach;
 }
 
 /* ---------------------------------------------------------------------- */

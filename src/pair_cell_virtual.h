@@ -2,8 +2,9 @@
    SPDX-License-Identifier: GPL-2.0-or-later
    cellmech: virtual wall particles (paper Sec. II C): one massless particle
    at the barycentre of each wall triangle repels the fluid with the 8-4
-   law of pair cell/lj84 (whose coefficients it shares); its reaction is
-   shared by the triangle's three nodes.
+   law of pair cell/lj84 (whose coefficients it shares), and optionally
+   holds the fluid of its own cell (adhere); its reaction is shared by the
+   triangle's three nodes.
 ------------------------------------------------------------------------- */
 
 #ifdef PAIR_CLASS
@@ -24,8 +25,10 @@ namespace LAMMPS_NS {
 class PairCellVirtual : public PairCellLJ84 {
  public:
   PairCellVirtual(class LAMMPS *);
+  ~PairCellVirtual() override;
   void compute(int, int) override;
   void settings(int, char **) override;
+  void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
   void write_restart_settings(FILE *) override;
@@ -33,6 +36,12 @@ class PairCellVirtual : public PairCellLJ84 {
 
  protected:
   double reach;    // bound on |barycentre - central node| of a triangle
+  // the adhesion of a fluid type to its own cell's wall type (Eq. A1): strength and range, 0 if
+  // none; adhering: some type pair has Fa > 0
+  double **fa, **delta;
+  bool adhering;
+  void allocate() override;
+  std::vector<double **> extra_coeffs() override { return {fa, delta}; }
   // types with a cell/virtual coefficient: under pair_style hybrid the neighbour list skips the
   // others, so a central node of such a type has no list to walk
   std::vector<char> listed;
@@ -40,6 +49,9 @@ class PairCellVirtual : public PairCellLJ84 {
   static constexpr double MIN_R0_EDGE = 0.5;
   void check_contact_distance();
   void repel_fluid(int a, int b, int c, int eflag);
+  void hold_fluid(int a, int b, int c, int eflag);
+  void tally_contact(int k, int a, int b, int c, const double *del, double fpair, double e,
+                     int eflag);
   void check_reach(int a, int b, int c, const double *B);
 };
 
