@@ -168,11 +168,11 @@ def jsonable(m):
 def turgor_stiffer(c, lam):
     """(verdict or None, words): do the converged moduli rise with turgor (converged.turgor_points)?"""
     pts, rises = C.turgor_points(c.rows, lam)
-    left = [pi for pi in C.PIS if (pi, lam) in c.rows and not c.rows[pi, lam]["converged"]]
+    left = [f"Pi {pi}: " + ("burst before loading" if m["burst"] else "failed before the window ends"
+                            if not np.isfinite(m["E"]) else "not converged")
+            for pi in C.PIS if (pi, lam) in c.rows and not (m := c.rows[pi, lam])["converged"]]
     words = ", ".join(f"{fmt(e)} kPa at Pi {pi}" for pi, e in pts) or "none"
-    if left:
-        words += f" (not converged at Pi {and_list(map(str, left))})"
-    return rises, words
+    return rises, words + (f" ({'; '.join(left)})" if left else "")
 
 
 def falls(pts):
@@ -200,14 +200,14 @@ def mode_turn(c, pi):
     a, b = c.rows.get((pi, "strong")), c.rows.get((pi, "weak"))
     if not (a and b):
         return None, None
-    why = [f"{lam}: {w}" for lam, m in (("strong", a), ("weak", b))
-           for w in (["burst before loading"] if m["burst"] else
-                     ["no failure within its record"] if not m["fail"]["first"] else
+    burst = a["burst"] or b["burst"]
+    why = [f"{lam}: {w}" for lam, m in (("strong", a), ("weak", b)) if not m["burst"]
+           for w in (["no failure within its record"] if not m["fail"]["first"] else
                      ([] if m["first_converged"] else ["first failure not converged"])
                      + ([] if m["fail"]["mode"] == m["fail_fast"]["mode"] else ["another kind at 2v"]))]
-    words = (f"strong lamella: {mode_cell(a)}, weak: {mode_cell(b)}")
-    if why:
-        return None, words + f" ({'; '.join(why)})"
+    words = f"strong lamella: {mode_cell(a)}, weak: {mode_cell(b)}" + (f" ({'; '.join(why)})" if why else "")
+    if why or burst:
+        return None, words
     return a["fail"]["mode"] == "wall rupture" and b["fail"]["mode"] == "lamella debonding", words
 
 
@@ -241,8 +241,9 @@ def trends(cs):
 
 def text_trends(rep, cs):
     T_, lines = trends(cs)
-    rep.w("### Do the published trends hold here?", "",
-          "Measured in parenchyma: " + " ".join((STIFFER, EARLIER, MODE)) + " Each trend is held against the "
+    rep.w("### Do the published trends hold here?", "", "Measured in parenchyma:", "",
+          *[f"* {t}" for t in (STIFFER, EARLIER, MODE)], "",
+          "Each trend is held against the "
           "converged numbers of each block and experiment above, and only those: a modulus where the condition "
           "converged, a first failure where both speeds begin to fail within 1% strain (a block burst before "
           "loading failed first of all), a strain at peak where the failure converged, a failure mode where the "
