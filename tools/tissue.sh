@@ -122,7 +122,11 @@ print(int(round(n / 4 / 100.0)) * 100)"
 }
 { echo "# RES=$RES NP=$NP JOBS=$JOBS block='$NB' NINFL=$NINFL vcompress=$VC strain=$EPSC impact_strain=$EPSI hold=$HOLDI pull=$PULL"
   echo "# reach block=$reach_b pair=$reach_p single=$reach_s; special block=$special_b pair=$special_p single=$special_s"
-  echo "# started $(date -u '+%Y-%m-%d %H:%M:%S UTC') on $(nproc) cores"; } > run-info.txt
+  echo "# started $(date -u '+%Y-%m-%d %H:%M:%S UTC') on $(nproc) cores"; } > run-info.tmp
+# ONLY=report (or report-water) runs nothing: the run settings of the runs it reports stay as they are
+reports_only=1
+for s in ${ONLY:-run}; do case $s in report|report-water) ;; *) reports_only=0 ;; esac; done
+[ $reports_only = 1 ] && rm run-info.tmp || mv run-info.tmp run-info.txt
 echo "RES=$RES: block $NB, output in $out, report in $report"
 
 # ---- inflations (Pi -364 and -100 kPa for the block; the pair and the single cell at -364)
@@ -197,7 +201,7 @@ bg water-dry waterdry 2.0e-4 0.2 6000
 bg water-dry-slow waterdry 1.0e-4 0.7 0
 wait
 
-echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
+[ $reports_only = 1 ] || echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
 want report && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" --figs "$figs" \
   --converged "${converged[@]}"
 [ -n "${ONLY:-}" ] && want report-water && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" \
