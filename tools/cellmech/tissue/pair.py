@@ -253,7 +253,8 @@ def text_compare(rep, S, ps):
     """The pair against the single cell by plate travel and by strain, and the press's check."""
     fmt, pct = T.fmt, T.pct
     q = S["quasistatic"]
-    rep.w("**The pair against one cell: by plate travel, not by strain** (docs/studies/tissue-pair-stiffness.md). "
+    study = os.path.relpath(os.path.join(params.ROOT, "docs", "studies", "tissue-pair-stiffness.md"), rep.report)
+    rep.w(f"**The pair against one cell: by plate travel, not by strain** ([the pair's stiffness study]({study})). "
           "Two cells glued across a flat face are not two springs in series: the glued face is pressed equally "
           "from both sides and takes almost none of the travel, which goes into the two caps that touch the "
           "plates, as for the single cell. At one strain the pair, twice as tall, is pressed twice as far, so "

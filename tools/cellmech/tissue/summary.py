@@ -112,8 +112,8 @@ def impact_words(rep):
         return "No impact ran."
     ncell = int(rep.block["cells"])
     lost = [r["fluid_lost_fraction"] for r in rows if r.get("fluid_lost_fraction") is not None]
-    return (f"The turgid block hit at {and_list(str(r['vplate_m_s']) for r in rows)} m/s (impacts: dynamic by design) "
-            f"({span([r['energy_pJ'] for r in rows], ' pJ')} of plate work) had "
+    return (f"The turgid block hit at {and_list(str(r['vplate_m_s']) for r in rows)} m/s (impacts, dynamic by design: "
+            f"{span([r['energy_pJ'] for r in rows], ' pJ')} of plate work) had "
             f"{span([r['ruptured_cells'] or 0 for r in rows])} of its {ncell} cells ruptured"
             + (f" and lost {span([100 * x for x in lost], '%')} of its fluid" if lost else "") + ".")
 
