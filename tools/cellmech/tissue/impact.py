@@ -96,6 +96,8 @@ def text(rep, rows, im):
     """The section: what ran (from the impacts' settings im), the figure and the table."""
     ncell = int(rep.block["cells"])
     rep.w(f"## 4. Impact on the turgid block (Pi {im['Pi']:g} kPa, strong lamella)", "",
+          "**Dynamic by design**: an impact measures the bruise that a blow of given energy leaves, inertia "
+          "included, not the tissue's quasi-static response (section 2). "
           f"`in.tissue-impact -var vplate V` (lamf {im['lamf']:g}, sigl {im['sigl']:g} kPa, Gl {im['Gl'] / 1000:g} J/m^2): "
           "the top plate hits at V and drives "
           "in at that constant speed to the strain of run-info.txt, then holds (run-info.txt) while the block settles. "
