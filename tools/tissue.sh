@@ -4,13 +4,18 @@
 #   1. pair: two glued cells stacked along z pressed to 10% and pulled apart (in.tissue-pair), and a
 #      single cell of the same size pressed alone: force vs strain, contact and glued area,
 #      pull-off force, work of separation against Gc x glued area;
-#   2. block: 3x3x3 cells inflated at two turgors (Pi -364 and -100 kPa), each compressed to 30%
-#      with a strong and a weak middle lamella (named in tools/cellmech/params.py: `python3 -m
-#      cellmech.params lamella weak`; in.tissue-compress, lamf 1.04): stress-strain, modulus, failure
-#      strain and mode;
-#   3. impact: the turgid block (Pi -364) hit at 5, 10, 20 m/s (in.tissue-impact): bruise
-#      (ruptured cells, debonded area, fluid lost) against the impact energy.
-#   4. water (fix cell/fluid solute/exchange/external): one inflated cell against external water
+#   2. blocks at converged rates: not run here but read from tools/tissue-converged.sh's run folders
+#      (CONVERGED below): compression and tension at three turgors and two lamellae, each condition
+#      at v and 2v (converged modulus, failure stress and strain, failure mode, the rate evidence;
+#      cellmech.tissue.converged measures them), and the published trends held against them;
+#   3. rate study: a 3x3x3 block inflated at two turgors (Pi -364 and -100 kPa), each compressed to
+#      30% at VC m/s (2 for RES=coarse: dynamic by the quasi-static checks, which the report gives
+#      per run) with a strong and a weak middle lamella (named in tools/cellmech/params.py:
+#      `python3 -m cellmech.params lamella weak`; in.tissue-compress, lamf 1.04): stress-strain,
+#      failure events, pictures; these numbers feed neither the trends nor the summary;
+#   4. impact: the turgid block (Pi -364) hit at 5, 10, 20 m/s (in.tissue-impact): bruise
+#      (ruptured cells, debonded area, fluid lost) against the impact energy (dynamic by design).
+#   5. water (fix cell/fluid solute/exchange/external): one inflated cell against external water
 #      potentials from 0 to Pi (in.water-potential); the glued pair with cell 2 at Pi -200 kPa
 #      (in.water-pair); a 2x2x2 block dried to 20% of its water through its exposed faces
 #      (in.tissue-dry), and a short leg at half the conductivity (the quasi-static check).
@@ -19,13 +24,19 @@
 #      "Water" section into an existing tissue.md (and its key in the summary).
 #   RES=coarse bash tools/tissue.sh   # level-3 walls (642 nodes), 27-cell block (default; ~20 min on 2 cores)
 #   RES=small  bash tools/tissue.sh   # quick check: 8-cell block (2x2x2), shorter runs (a few minutes)
-#   RES=coarse REPORT=docs bash tools/tissue.sh   # the committed report: docs/tissue.md, docs/tissue/*.png,
+#   RES=coarse REPORT=docs CONVERGED="results/tissue-converged results/tissue-converged-27" bash tools/tissue.sh
+#                                                 # the committed report: docs/tissue.md, docs/tissue/*.png,
 #                                                 # docs/tissue-summary.json
+#   RES=coarse REPORT=docs CONVERGED="..." ONLY=report bash tools/tissue.sh   # the report alone, from runs
+#                                                 # already in OUT (no LAMMPS run)
 # Environment: OUT (run folder, default results/tissue-$RES), NP (MPI ranks per run, default 1),
 #   JOBS (runs at a time, default 2), ONLY (space-separated stage names), RESUME=1 (skip stages
 #   already done), REPORT (report folder; default $OUT; "docs" = the repository's docs/),
 #   INPUTS (folder of the input scripts, default lammps-inputs), WALL (tether | membrane | bending,
-#   lammps-inputs/cell-wall.lmp; the run folder gets -$WALL).
+#   lammps-inputs/cell-wall.lmp; the run folder gets -$WALL), CONVERGED (space-separated run folders
+#   of tools/tissue-converged.sh, compressions and/or tensions of any block size: the report's
+#   section 2, its trends and the summary's block numbers; without it the report has no block
+#   numbers at converged rates).
 # Every LAMMPS run has its own sub-folder of $OUT (its log, data files, pictures, VTK surfaces, and
 # settings.json: every -var it was given and the defaults that applied, which the report reads); the
 # wall time of each stage is in $OUT/times.txt.
@@ -52,6 +63,9 @@ case "${REPORT:-}" in
   docs) report=$here/docs; figs=$here/docs/tissue ;;
   *) mkdir -p "$REPORT"; report=$(cd "$REPORT" && pwd); figs=$report/tissue ;;
 esac
+# the converged campaigns' run folders, as given from where the script was called
+converged=()
+for d in ${CONVERGED:-}; do converged+=("$(realpath -m "$d")"); done
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 cd "$out"
@@ -108,7 +122,11 @@ print(int(round(n / 4 / 100.0)) * 100)"
 }
 { echo "# RES=$RES NP=$NP JOBS=$JOBS block='$NB' NINFL=$NINFL vcompress=$VC strain=$EPSC impact_strain=$EPSI hold=$HOLDI pull=$PULL"
   echo "# reach block=$reach_b pair=$reach_p single=$reach_s; special block=$special_b pair=$special_p single=$special_s"
-  echo "# started $(date -u '+%Y-%m-%d %H:%M:%S UTC') on $(nproc) cores"; } > run-info.txt
+  echo "# started $(date -u '+%Y-%m-%d %H:%M:%S UTC') on $(nproc) cores"; } > run-info.tmp
+# ONLY=report (or report-water) runs nothing: the run settings of the runs it reports stay as they are
+reports_only=1
+for s in ${ONLY:-run}; do case $s in report|report-water) ;; *) reports_only=0 ;; esac; done
+[ $reports_only = 1 ] && rm run-info.tmp || mv run-info.tmp run-info.txt
 echo "RES=$RES: block $NB, output in $out, report in $report"
 
 # ---- inflations (Pi -364 and -100 kPa for the block; the pair and the single cell at -364)
@@ -183,8 +201,9 @@ bg water-dry waterdry 2.0e-4 0.2 6000
 bg water-dry-slow waterdry 1.0e-4 0.7 0
 wait
 
-echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
-want report && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" --figs "$figs"
+[ $reports_only = 1 ] || echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
+want report && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" --figs "$figs" \
+  --converged "${converged[@]}"
 [ -n "${ONLY:-}" ] && want report-water && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" \
   --figs "$figs" --only water
 echo "tissue done: $out (report $report/tissue.md)"

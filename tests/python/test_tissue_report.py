@@ -13,11 +13,24 @@ from cellmech.tissue import report, summary
 def fake_rep(tmp_path, settings):
     S = {"pair": {"force_at_5pct_pair_nN": 6.0e4, "force_at_5pct_single_nN": 2.0e4, "pull_force_max_nN": 1.4e5,
                   "sigmaA_nN": 5.0e5, "W_over_GcA": 0.7},
-         "block": {"-364_strong": {"name": "compress-364-strong", "lamella": "strong", "mode": "rupture",
-                                   "strain_end": 0.3, "modulus_kPa": 400.0, "peak_stress_kPa": 33.0},
-                   "-364_weak": {"name": "compress-364-weak", "lamella": "weak", "mode": "debonding",
-                                 "strain_end": 0.3, "modulus_kPa": 1600.0, "peak_stress_kPa": 55.0}},
-         "block_trends": {"weak_turns_rupture_into_debonding_Pi-364": True, "turgor_stiffer_strong": False},
+         "block_rate_study": {"-364_strong": {"name": "compress-364-strong", "lamella": "strong", "mode": "rupture",
+                                              "strain_end": 0.3, "modulus_kPa": 400.0, "peak_stress_kPa": 33.0,
+                                              "quasistatic": False},
+                              "-364_weak": {"name": "compress-364-weak", "lamella": "weak", "mode": "debonding",
+                                            "strain_end": 0.3, "modulus_kPa": 1600.0, "peak_stress_kPa": 55.0,
+                                            "quasistatic": False}},
+         "block_rate_study_definitions": {"vplate_m_s": 2.0},
+         "block_converged": [{"cells": 8, "experiment": "compress",
+                              "lamellae": {"strong": {"sigl_kPa": 300.0, "Gl": 1000.0},
+                                           "weak": {"sigl_kPa": 30.0, "Gl": 100.0}},
+                              "conditions": {"-364_strong": {"v_m_s": 0.25, "modulus_kPa": 900.0, "modulus_converged": True,
+                                                             "failure_stress_kPa": 70.0, "failure_converged": True,
+                                                             "mode": "wall rupture"},
+                                             "-100_strong": {"v_m_s": 0.125, "modulus_kPa": 500.0,
+                                                             "modulus_converged": False, "failure_stress_kPa": 80.0,
+                                                             "failure_converged": False, "mode": "wall rupture"}}}],
+         "block_trends": {"compress_8_weak_turns_rupture_into_debonding_Pi-364": True,
+                          "compress_8_turgor_stiffer_strong": False, "compress_8_turgor_stiffer_weak": None},
          "impact": [{"vplate_m_s": 5, "energy_pJ": 2.0e4, "ruptured_cells": 27, "fluid_lost_fraction": 0.15}],
          "water": {}, "cells": 27}
     return types.SimpleNamespace(S=S, block={"cells": 27}, times={"gen": (4, "ok"), "pair": (40, "failed(rc=1)")},
@@ -38,10 +51,16 @@ def test_summary_reads_the_numbers_and_settings(tmp_path):
     assert "pull-off force 140 uN (0.28 of the lamella's strength x glued area)" in text
     assert "work of separation 0.7 of its fracture energy x glued area (not within 15% of 1)" in text
     assert "a strong (sigl 300 kPa, Gl 1 J/m^2) and a weak lamella (30 kPa, 0.1 J/m^2)" in text
-    assert "apparent modulus 400-1.6e+03 kPa, peak stress 33-55 kPa" in text
-    # runs without settings.json name no plate speed
-    assert "at the plate speed of the run settings below" in text
-    assert "Of the 2 published trends checked (section 2), 1 holds here" in text
+    # the block's numbers are the converged ones only: the modulus that has not converged and the
+    # fast runs' numbers are not among them
+    assert "8-cell blocks compressed at 0.125 and 0.25 m/s" in text
+    assert "Converged modulus: 900 kPa (8-cell compression, 1 of 2 conditions)" in text
+    assert "Converged failure stress: 70 kPa (8-cell compression, 1 of 2 conditions)" in text
+    assert "500 kPa" not in text and "1.6e+03" not in text and "33 kPa" not in text and "55 kPa" not in text
+    assert ("Of the 3 published trends checked against the converged numbers (section 2), 1 holds, 1 does not, "
+            "and 1 cannot be told") in text
+    assert "The 2 compressions of the 27-cell block at 2 m/s are a rate study (section 3)" in text
+    assert "the quasi-static checks call 2 of 2 dynamic" in text
     assert "27 of its 27 cells ruptured and lost 15% of its fluid" in text
     assert "1 of 2 stages finished" in text
 

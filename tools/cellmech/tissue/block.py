@@ -1,13 +1,19 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Section 2 of the tissue report (cellmech.tissue.report): the block compressed to failure at
-each turgor with each named lamella (in.tissue-compress). Load, measure, figures, text; every
-number goes into the summary (rep.S["block"], rep.S["block_trends"])."""
+"""Section 3 of the tissue report (cellmech.tissue.report): the rate study, tools/tissue.sh's block
+compressed to failure at its fast plate speed (2 m/s for RES=coarse) at each turgor with each
+named lamella (in.tissue-compress). The quasi-static checks (cellmech.quasistatic) call these runs
+dynamic, so they feed neither the trends nor the summary's numbers (section 2, convblock.py, has
+the converged ones). Load, measure, check, figures, text; every number goes into the summary
+(rep.S["block_rate_study"])."""
 import os
+import re
 import sys
 
 import numpy as np
 
 from .. import params, reporting
+from .. import quasistatic as Q
+from . import converged as C
 from . import tissuedata as T
 from .tissuedata import fmt, pct
 
@@ -30,6 +36,27 @@ def settings(rep):
         out[lam] = (rep.settings(names[0], "in.tissue-compress", lam) if names else
                     dict(params.defaults(os.path.join(params.INPUTS, "in.tissue-compress")), **params.lamellae()[lam]))
     return out
+
+
+def speed(rep, names):
+    """The plate speed (m/s) of the runs: from their settings.json; for runs older than it, the
+    vcompress= of run-info.txt (tools/tissue.sh passes it as -var vplate); None where neither says."""
+    have = [n for n in names if os.path.exists(rep.p(f"{n}/{params.SETTINGS}"))]
+    if have:
+        return sorted({rep.settings(n, "in.tissue-compress")["vplate"] for n in have})[-1]
+    m = re.search(r"vcompress=([0-9.eE+-]+)", rep.info)
+    return float(m.group(1)) if m else None
+
+
+def quasistatic(R, d):
+    """The quasi-static checks of one run into R (no run at half the speed: balance and KE/W), from
+    the compression's check start (converged.KINDS) to the first rupture."""
+    k = C.KINDS["compress"]
+    _, _, _, v = Q.check(d, k.start, float(d["strain"].max()), width=k.width)
+    R["quasistatic"] = v.quasistatic
+    R["qs_balance_worst"], R["qs_ke_over_work_worst"] = v.numbers["balance"], v.numbers["ke_over_work"]
+    R["qs_reasons"] = v.reasons
+    R["qs_range"] = [k.start, Q.intact_range(d, k.start, float(d["strain"].max()))[1]]
 
 
 def measure_curve(R, d, sm):
@@ -91,6 +118,7 @@ def compress_run(rep, name, Pi, lam, window_us):
          "window_samples": n, "strain_end": float(d["strain"][-1])}
     measure_curve(R, d, sm)
     measure_damage(rep, R, name, d)
+    quasistatic(R, d)
     T.write_csv(rep.fig(f"{name}.csv"), {**d, "stress_smoothed_kPa": sm},
                 ["time_us", "strain", "stress_kPa", "stress_smoothed_kPa"] + T.COMPRESS[3:],
                 f"in.tissue-compress Pi {Pi} kPa, lamella {lam} (sigl {cs['sigl']:g} kPa, Gl {cs['Gl']:g}); "
@@ -132,7 +160,9 @@ def figure_stress_strain(rep, runs, window_us):
     ax[0].set_xlim(left=-0.005)
     ax[0].set_ylim(bottom=min(0, min(np.min(r[2]) for r in runs.values())))
     ax[0].legend(fontsize=8, loc="upper right")
-    ax[0].set_title(f"block compression at the plate speed of run-info.txt; smoothed {window_us:g} us", fontsize=9)
+    v = speed(rep, [R["name"] for R, _, _ in runs.values()])
+    ax[0].set_title(f"rate study (dynamic): block compression at {'the plate speed of run-info.txt' if v is None else f'{v:g} m/s'}; "
+                    f"smoothed {window_us:g} us", fontsize=9)
     ax[1].set_xlabel("strain")
     ax[1].set_ylabel("count")
     ax[1].set_yscale("symlog", linthresh=10)
@@ -160,66 +190,28 @@ def figure_mode(rep, runs):
     reporting.save_figure(rep.fig("block-failure-mode.png"), fig, tight=True)
 
 
-def turgor_trend(runs, lam, T_):
-    """Does the turgid block stiffen and fail earlier than the flaccid one (this lamella)? A line
-    of text, or None where either run is missing; the answers into T_."""
-    (hi, lo), (a, b) = PIS, (runs.get((PIS[0], lam)), runs.get((PIS[1], lam)))
-    if not (a and b):
-        return None
-    Ea, Eb = a[0]["modulus_kPa"], b[0]["modulus_kPa"]
-    stiffer = Ea is not None and Eb is not None and Ea > Eb
-    fa, fb = a[0]["first_event_strain"], b[0]["first_event_strain"]
-    pa, pb = a[0]["strain_at_peak"], b[0]["strain_at_peak"]
-    earlier = fa is not None and (fb is None or fa < fb)
-    earlier_pk = pa < pb
-    T_[f"turgor_stiffer_{lam}"] = stiffer
-    T_[f"turgor_fails_earlier_{lam}"] = earlier
-    T_[f"turgor_peak_earlier_{lam}"] = earlier_pk
-    return (f"* {lam} lamella: modulus {fmt(Ea)} kPa at Pi {hi} vs {fmt(Eb)} kPa at {lo} -> "
-            f"higher turgor stiffer: **{'yes' if stiffer else 'no'}**; first failure event at "
-            f"{pct(fa)} vs {pct(fb)} -> fails earlier: **{'yes' if earlier else 'no'}** "
-            f"(strain at peak stress {pct(pa)} vs {pct(pb)}: "
-            f"{'earlier' if earlier_pk else 'not earlier'}).")
-
-
-def lamella_trend(runs, Pi, T_):
-    """Does the weak lamella turn rupture into debonding at this turgor? As turgor_trend."""
-    a, b = runs.get((Pi, "strong")), runs.get((Pi, "weak"))
-    if not (a and b):
-        return None
-    ra, rb = a[0], b[0]
-    turns = ra["mode"] == "rupture" and rb["mode"] == "debonding"
-    more_deb = (rb["debonded_fraction"] or 0) > (ra["debonded_fraction"] or 0)
-    fewer_rup = rb["ruptured_fraction"] < ra["ruptured_fraction"]
-    T_[f"weak_turns_rupture_into_debonding_Pi{Pi}"] = turns
-    T_[f"weak_more_debonding_Pi{Pi}"] = more_deb
-    T_[f"weak_fewer_ruptured_Pi{Pi}"] = fewer_rup
-    return (f"* Pi {Pi}: strong lamella {ra['mode']} ({pct(ra['ruptured_fraction'])} of the tethers "
-            f"broken in {ra['ruptured_cells']} cells, {pct(ra['debonded_fraction'])} of the glued area "
-            f"debonded), weak {rb['mode']} ({pct(rb['ruptured_fraction'])} broken in "
-            f"{rb['ruptured_cells']} cells, {pct(rb['debonded_fraction'])} debonded) -> weak adhesion "
-            f"turns rupture into debonding: **{'yes' if turns else 'no'}** (more debonding: "
-            f"{'yes' if more_deb else 'no'}, fewer broken tethers: {'yes' if fewer_rup else 'no'}).")
-
-
-def trends(runs):
-    """({trend: yes/no}, the lines saying them) of the published trends, where both runs exist."""
-    T_ = {}
-    lines = [turgor_trend(runs, lam, T_) for lam in LAMS] + [lamella_trend(runs, Pi, T_) for Pi in PIS]
-    return T_, [ln for ln in lines if ln]
-
-
 def text_intro(rep, window_us):
     """The section's heading, what ran and the definitions."""
     ncell = int(rep.block["cells"])
     st, wk = (settings(rep)[lam] for lam in ("strong", "weak"))
-    rep.w(f"## 2. Block of {ncell} cells compressed to failure", "",
+    v = speed(rep, [f"compress{Pi}-{lam}" for Pi in PIS for lam in LAMS])
+    at = f"at {v:g} m/s" if v is not None else "at the plate speed of run-info.txt"
+    rep.w(f"## 3. Rate study: block of {ncell} cells compressed {at} (dynamic)", "",
+          f"**A rate study, not the tissue's response.** By the quasi-static checks (cellmech.quasistatic: the "
+          f"plates balance within {Q.TOL_BALANCE:.0%} and KE/W stays below {Q.TOL_KE:.0%} in every "
+          f"{C.strain_pct(C.KINDS['compress'].width)} window from {C.strain_pct(C.KINDS['compress'].start)} "
+          "strain to the first rupture; no run at half the speed) every run below is dynamic (the *quasi-static "
+          "check* column): the plate "
+          "drives inertia as well as the tissue, and these runs predate the quasi-static protocol (their "
+          "inflation left the cells' fluid still moving, and the top plate alone moves). Their numbers feed "
+          "neither the trends nor the summary; section 2 has the converged ones. They stay to show what a fast "
+          "compression gives, with the pictures and per-cell tables of a run to 30% strain.", "",
           f"`cellgen.py tissue --lattice sc` ({ncell} cells, {rep.block['lamella_bonds']} lamella bonds, glued "
           f"area {sum(p['glued_area'] for p in rep.block['pairs']):.6g} um^2 over {len(rep.block['pairs'])} "
           f"cell pairs), inflated twice with `in.tissue-inflate` (Pi {' and '.join(map(str, PIS))} kPa), each "
           f"compressed with `in.tissue-compress -var lamf {st['lamf']:g}` (tethers break at {st['lamf'] - 1:.0%} "
           f"stretch, the paper's) with a strong (sigl {st['sigl']:g} kPa, Gl {st['Gl']:g} pg/us^2 = "
-          f"{st['Gl'] / 1000:g} J/m^2) and a weak lamella ({wk['sigl']:g} kPa, {wk['Gl']:g} pg/us^2). "
+          f"{st['Gl'] / 1000:g} J/m^2) and a weak lamella ({wk['sigl']:g} kPa, {wk['Gl']:g} pg/us^2), {at}. "
           "Stress = top-plate force / initial cross-section of the block; strain = plate travel from first "
           f"contact / initial height. Stress smoothed by a centred moving average over {window_us:g} us of plate "
           "time (faint: raw); the plate force rings with the walls.", "",
@@ -236,6 +228,13 @@ def text_intro(rep, window_us):
           "*none* if both are 0: the share of each failing material that has failed.", "")
 
 
+def qs_cell(R):
+    """The quasi-static check's verdict of a run, with its worst numbers and range."""
+    lo, hi = R["qs_range"]
+    return (f"{'quasi-static' if R['quasistatic'] else 'dynamic'} ({pct(R['qs_balance_worst'])}; "
+            f"{pct(R['qs_ke_over_work_worst'])}; {C.strain_pct(lo)}-{pct(hi)})")
+
+
 def text_table(rep, runs):
     """The figures and the table of the compressions, with the per-cell table's step."""
     ncell = int(rep.block["cells"])
@@ -243,13 +242,13 @@ def text_table(rep, runs):
           f"![failure mode]({rep.link('block-failure-mode.png')})", "",
           "| Pi (kPa) | lamella | P at start (kPa) | modulus (kPa) | peak stress (kPa) | strain at peak | first rupture | "
           "first debond | ruptured cells | broken tethers | ruptured fraction | debonded area (um^2) | debonded "
-          "fraction | leaked fluid particles | mode |", "|" + "---|" * 15)
+          "fraction | leaked fluid particles | mode | quasi-static check (worst plates; KE/W) |", "|" + "---|" * 16)
     for key, (R, d, sm) in sorted(runs.items(), key=lambda kv: (kv[0][0], kv[0][1])):
         rep.w(f"| {key[0]} | {key[1]} | {fmt(R['P_start_kPa'])} | {fmt(R['modulus_kPa'])} | {fmt(R['peak_stress_kPa'])} | "
               f"{pct(R['strain_at_peak'])}{' (end)' if R['peak_is_end'] else ''} | {pct(R['first_rupture_strain'])} | "
               f"{pct(R['first_debond_strain'])} | {fmt(R['ruptured_cells'])} / {ncell} | {R['broken_tethers_end']} | "
               f"{pct(R['ruptured_fraction'])} | {fmt(R['debonded_area_um2'])} | {pct(R['debonded_fraction'])} | "
-              f"{R.get('leaked_particles_end', '-')} | {R['mode']} |")
+              f"{R.get('leaked_particles_end', '-')} | {R['mode']} | {qs_cell(R)} |")
     some = next(iter(runs.values()))[0]
     rep.w("", f"Per-cell table: the last one written, at strain {pct(some['table_strain'])} (step {some['table_step']}; "
           "tables every `tabevery` steps, see run-info.txt). Glued area at the start of the compression: "
@@ -286,16 +285,14 @@ def section(rep, window_us):
     text_intro(rep, window_us)
     if not runs:
         rep.w("No block compression finished.", "")
-        rep.S["block"] = None
+        rep.S["block_rate_study"] = None
         return
     figure_stress_strain(rep, runs, window_us)
     figure_mode(rep, runs)
     text_table(rep, runs)
-    T_, lines = trends(runs)
-    rep.w("### Do the published trends hold here?", "", *lines, "")
-    rep.S["block"] = {f"{k[0]}_{k[1]}": R for k, (R, _, _) in runs.items()}
-    rep.S["block_trends"] = T_
-    rep.S["block_definitions"] = {"window_us": window_us, "modulus_strain_range": list(EPS_FIT),
-                                  "mode_rule": MODE_RULE}
+    rep.S["block_rate_study"] = {f"{k[0]}_{k[1]}": R for k, (R, _, _) in runs.items()}
+    rep.S["block_rate_study_definitions"] = {"window_us": window_us, "modulus_strain_range": list(EPS_FIT),
+                                             "mode_rule": MODE_RULE, "vplate_m_s": speed(
+                                                 rep, [R["name"] for R, _, _ in runs.values()])}
     rep.runs = runs
     text_pairs(rep)

@@ -131,10 +131,14 @@ def measure(kind, slow, fast):
     # first touch): that is no compression failure, and its peak no failure stress
     first = [min(g["first"].values()) if g["first"] else end for g in (f, ff)]
     burst = f["first"].get("wall rupture", end) < kind.start
+    # the first failure event (its strain and kind) has converged when both speeds begin to fail
+    # within 1% strain of each other, the walls intact at kind.start
+    first_converged = not burst and abs(first[0] - first[1]) <= 0.01
     # a peak in the record's last 1% strain may be no peak: the stress was still rising at its end
     rising = f["strain_at_peak"] >= end - 0.01
     return dict(P0=float(slow["P_mean_kPa"][0]), E=modulus(slow, *kind.window) if intact else float("nan"),
-                fail=f, fail_fast=ff, failure_converged=not burst and not rising and abs(first[0] - first[1]) <= 0.01,
+                fail=f, fail_fast=ff, failure_converged=first_converged and not rising,
+                first_converged=first_converged, first_event=first[0] if f["first"] else None,
                 burst=burst, rising=rising,
                 balance=v.numbers.get("balance"), ke=v.numbers.get("ke_over_work"), rate=worst,
                 start=start, judged=(kind.start, hi),
@@ -273,14 +277,20 @@ def compare(kind, rows):
             f"times below apple's 0.3 MPa ({kind.versus}).")
 
 
+def turgor_points(rows, lam):
+    """([(pi, modulus)] of the converged moduli of a lamella in order of rising turgor, whether
+    they rise with it); the rise is None with fewer than two converged moduli."""
+    pts = sorted(((pi, rows[pi, lam]["E"]) for pi in PIS if (pi, lam) in rows and rows[pi, lam]["converged"]),
+                 key=lambda p: -p[0])
+    return pts, (all(b[1] > a[1] for a, b in zip(pts, pts[1:])) if len(pts) > 1 else None)
+
+
 def turgor_trend(rows):
     """The converged moduli against turgor, per lamella."""
     out = []
     for lam in LAMELLAE:
-        pts = [(pi, rows[pi, lam]["E"]) for pi in PIS if (pi, lam) in rows and rows[pi, lam]["converged"]]
+        pts, rises = turgor_points(rows, lam)
         if len(pts) > 1:
-            pts.sort(key=lambda p: -p[0])           # rising turgor
-            rises = all(b[1] > a[1] for a, b in zip(pts, pts[1:]))
             out.append(f"{lam.capitalize()} lamella: " + ", ".join(f"{fmt(e)} kPa at Pi {pi}" for pi, e in pts)
                        + (" (rises with turgor)." if rises else " (does not rise with turgor)."))
     return " ".join(out) or "Too few converged moduli to tell a trend."
@@ -425,6 +435,14 @@ def run_info(kind, runs):
     return "; ".join(ln for ln in lines if ln.startswith("EXP=tension") == (kind.stage == "tension"))
 
 
+def conditions(kind, runs):
+    """(load_runs(kind, runs), {(pi, lam): measure(...) with the slow speed v and the notes}): every
+    condition of the kind in RUNS, measured and judged."""
+    data = load_runs(kind, runs)
+    return data, {key: dict(measure(kind, slow, fast), v=v, notes=notes)
+                  for key, (v, slow, fast, notes) in data.items()}
+
+
 def main(argv=None):
     args = argv or sys.argv[1:]
     runs, report = args[:2]
@@ -433,12 +451,9 @@ def main(argv=None):
     if which not in KINDS:
         raise SystemExit(f"converged: KIND {which}: expected one of {', '.join(KINDS)}")
     kind = KINDS[which]
-    data = load_runs(kind, runs)
+    data, rows = conditions(kind, runs)
     if not data:
         raise SystemExit(f"converged: no condition with runs at v and 2v in {runs}")
-    rows = {}
-    for key, (v, slow, fast, notes) in data.items():
-        rows[key] = dict(measure(kind, slow, fast), v=v, notes=notes)
     info = run_info(kind, runs)
     gen = gen_stats(f"{runs}/gen/block.json")
     lams = lamella_settings(kind, runs, data)

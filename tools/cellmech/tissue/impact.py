@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Section 3 of the tissue report (cellmech.tissue.report): the turgid block hit by the top plate
+"""Section 4 of the tissue report (cellmech.tissue.report): the turgid block hit by the top plate
 at each speed (in.tissue-impact), its bruise against the impact energy. Load, measure, figures,
 text; every number goes into the summary (rep.S["impact"])."""
 import os
@@ -95,7 +95,9 @@ def figure(rep, loaded, rows, stops):
 def text(rep, rows, im):
     """The section: what ran (from the impacts' settings im), the figure and the table."""
     ncell = int(rep.block["cells"])
-    rep.w(f"## 3. Impact on the turgid block (Pi {im['Pi']:g} kPa, strong lamella)", "",
+    rep.w(f"## 4. Impact on the turgid block (Pi {im['Pi']:g} kPa, strong lamella)", "",
+          "**Dynamic by design**: an impact measures the bruise that a blow of given energy leaves, inertia "
+          "included, not the tissue's quasi-static response (section 2). "
           f"`in.tissue-impact -var vplate V` (lamf {im['lamf']:g}, sigl {im['sigl']:g} kPa, Gl {im['Gl'] / 1000:g} J/m^2): "
           "the top plate hits at V and drives "
           "in at that constant speed to the strain of run-info.txt, then holds (run-info.txt) while the block settles. "
