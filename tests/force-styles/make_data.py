@@ -18,7 +18,8 @@ newton on and off differ in how forces on ghost atoms reach their owners:
 The per-atom fields of fix property/atom (cellgen's "cell" section) go to cell-fields.lmp as set
 commands that in.cell runs after read_data: the harness's bond tests write their data file with
 'nofix', and the round trip must restore them.
-The random numbers are seeded, so the file is reproducible.
+The random numbers are seeded, so the file is reproducible: the committed data.cell from the
+cellgen of commit 7ae7c66 (README.md: today's cellgen fills this tissue with 94 atoms, not 92).
 """
 import os
 import sys
