@@ -52,7 +52,7 @@ using namespace CellPhysics;
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), kappa(nullptr),
     s(nullptr), sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), stress_eps(0.0),
-    stress_dp(0.0), stress_n(0), wdp(nullptr), wdp_inv(nullptr), stress_r(nullptr), nmax(0),
+    stress_dp(0.0), stress_n(0), wdp(nullptr), fnorm(nullptr), stress_r(nullptr), nmax(0),
     quant(nullptr), pairs(new CellMech::SPHPairs(_lmp))
 {
   comm_forward = 2;
@@ -79,7 +79,7 @@ PairCellSPH::~PairCellSPH()
     memory->destroy(sinv);
     memory->destroy(wrnorm);
     memory->destroy(wdp);
-    memory->destroy(wdp_inv);
+    memory->destroy(fnorm);
   }
 }
 
@@ -131,9 +131,10 @@ template <bool STRESS> void PairCellSPH::forces()
     const double vxi = vf[3 * i], vyi = vf[3 * i + 1], vzi = vf[3 * i + 2];
     const double *const qi = quant + NQUANT * i;
     const double prho2i = qi[0], mi = qi[1], irhoi = qi[2], mui = qi[3];
-    const double *const si = STRESS ? s[type[i]] : nullptr;
+    const double *const sinvi = STRESS ? sinv[type[i]] : nullptr;
     const double *const wdpi = STRESS ? wdp[type[i]] : nullptr;
-    const double *const wdp_invi = STRESS ? wdp_inv[type[i]] : nullptr;
+    const double *const fnormi = STRESS ? fnorm[type[i]] : nullptr;
+    const double ri = STRESS ? stress_r[i] : 0.0;
     // as drho[i] in SPHPairs::find_pairs: the same additions in the same order, in registers
     double fxi = ff[3 * i], fyi = ff[3 * i + 1], fzi = ff[3 * i + 2];
     for (int k = pair_first[ii]; k < kend; k++) {
@@ -153,14 +154,14 @@ template <bool STRESS> void PairCellSPH::forces()
       double fp = sph_pressure_fpair(mi, mj, prho2i, qj[0], wr);
       double evdwl = 0.0;
       // the artificial stress where either particle is in tension (R > 0)
-      if (STRESS && stress_r[i] + stress_r[j] > 0.0) {
+      if (STRESS && ri + stress_r[j] > 0.0) {
         const int jt = type[j];
-        const double w = kernel_w(std::sqrt(delx * delx + dely * dely + delz * delz), si[jt]);
-        const double fn = sph_stress_fn(w, wdp_invi[jt], stress_n);
-        fp += sph_stress_fpair(mi, mj, stress_r[i], stress_r[j], fn, wr);
+        const double q = std::sqrt(delx * delx + dely * dely + delz * delz) * sinvi[jt];
+        const double f = kernel_w_q(q, fnormi[jt]);
+        const double fn = sph_stress_fn(f, stress_n);
+        fp += sph_stress_fpair(mi, mj, ri, stress_r[j], fn, wr);
         if (eflag_either)
-          evdwl = sph_stress_energy(mi, mj, stress_r[i], stress_r[j], fn * w * wdp_invi[jt],
-                                    wdpi[jt], stress_n);
+          evdwl = sph_stress_energy(mi, mj, ri, stress_r[j], fn * f, wdpi[jt], stress_n);
       }
       const double fv = sph_viscous_fvel(mi, mj, mui, qj[3], irhoi, qj[2], wr);
       const double fx = fp * delx + fv * dvx;
@@ -257,7 +258,7 @@ void PairCellSPH::allocate()
   memory->create(sinv, np1, np1, "pair:sinv");
   memory->create(wrnorm, np1, np1, "pair:wrnorm");
   memory->create(wdp, np1, np1, "pair:wdp");
-  memory->create(wdp_inv, np1, np1, "pair:wdp_inv");
+  memory->create(fnorm, np1, np1, "pair:fnorm");
   memory->create(fluid, np1, "pair:fluid");
   memory->create(rho0, np1, "pair:rho0");
   memory->create(c, np1, "pair:c");
@@ -432,7 +433,7 @@ double PairCellSPH::init_one(int i, int j)
                  "support 2s = {} of types {} and {}",
                  stress_dp, 2.0 * s[i][j], i, j);
     wdp[i][j] = wdp[j][i] = kernel_w(stress_dp, s[i][j]);
-    wdp_inv[i][j] = wdp_inv[j][i] = 1.0 / wdp[i][j];
+    fnorm[i][j] = fnorm[j][i] = kernel_w_norm(s[i][j]) / wdp[i][j];
   }
   return 2.0 * s[i][j];
 }
@@ -489,11 +490,10 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
   // the artificial stress and its pair energy
   const double ri = sph_stress_r(Pi, 1.0 / rho[i], stress_eps);
   const double rj = sph_stress_r(Pj, 1.0 / rho[j], stress_eps);
-  const double w = kernel_w(std::sqrt(rsq), s[itype][jtype]);
-  const double inv_wdp = wdp_inv[itype][jtype];
-  const double fn = sph_stress_fn(w, inv_wdp, stress_n);
+  const double f = kernel_w_q(std::sqrt(rsq) * sinv[itype][jtype], fnorm[itype][jtype]);
+  const double fn = sph_stress_fn(f, stress_n);
   fforce += sph_stress_fpair(mi, mj, ri, rj, fn, wr);
-  return sph_stress_energy(mi, mj, ri, rj, fn * w * inv_wdp, wdp[itype][jtype], stress_n);
+  return sph_stress_energy(mi, mj, ri, rj, fn * f, wdp[itype][jtype], stress_n);
 }
 
 void *PairCellSPH::extract(const char *str, int &dim)

@@ -76,11 +76,12 @@ class PairCellSPH : public Pair {
   double **sinv, **wrnorm;       // per type pair: 1 / s and kernel_wr_norm(s)
   int irho, idrho;               // indices of d_rho, d_drho in atom->dvector
   // Monaghan's artificial stress (pair_style cell/sph stress eps n dp; eps 0: off, the default):
-  // its strength, exponent and particle spacing; per type pair W(dp) and 1 / W(dp) (init_one);
+  // its strength, exponent and particle spacing; per type pair W(dp) and the prefactor of f =
+  // W(r) / W(dp) for kernel_w_q, kernel_w_norm(s) / W(dp) (init_one);
   // per local and ghost atom R = eps |P| / rho^2 in tension, else 0 (allocated only when on)
   double stress_eps, stress_dp;
   int stress_n;
-  double **wdp, **wdp_inv;
+  double **wdp, **fnorm;
   double *stress_r;
   int nmax;
   // per local and ghost atom, once per step: P / rho^2, m, 1 / rho, mu

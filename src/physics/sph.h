@@ -64,10 +64,10 @@ inline double sph_stress_r(double P, double inv_rho, double eps)
   return P < 0.0 ? -eps * P * inv_rho * inv_rho : 0.0;
 }
 
-// f^n, f = W(r) / W(dp) from W(r) and 1 / W(dp); n >= 1 (Monaghan's n = 4 for the cubic spline)
-inline double sph_stress_fn(double w, double inv_wdp, int n)
+// f^n of f = W(r) / W(dp) (kernel_w_q with the prefactor over W(dp)); n >= 1 (Monaghan's n = 4
+// for the cubic spline)
+inline double sph_stress_fn(double f, int n)
 {
-  const double f = w * inv_wdp;
   double fn = f;
   for (int k = 1; k < n; k++) fn *= f;
   return fn;

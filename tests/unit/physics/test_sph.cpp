@@ -198,13 +198,17 @@ struct StressPair {
   }
   double U(double r) const
   {
-    const double w = kernel_w(r, s), wdp = kernel_w(dp, s);
-    return sph_stress_energy(m[0], m[1], R(0), R(1), sph_stress_fn(w, 1.0 / wdp, n + 1), wdp, n);
+    // f from W itself, the definition
+    const double wdp = kernel_w(dp, s);
+    return sph_stress_energy(m[0], m[1], R(0), R(1), sph_stress_fn(kernel_w(r, s) / wdp, n + 1),
+                             wdp, n);
   }
   // the radial force on 0 from 1, F_ij . r_ij / r = fs r
   double Fr(double r) const
   {
-    const double fn = sph_stress_fn(kernel_w(r, s), 1.0 / kernel_w(dp, s), n);
+    // f as pair cell/sph computes it: the bracket at q = r (1/s) times kernel_w_norm(s) / W(dp)
+    const double f = kernel_w_q(r * (1.0 / s), kernel_w_norm(s) / kernel_w(dp, s));
+    const double fn = sph_stress_fn(f, n);
     return sph_stress_fpair(m[0], m[1], R(0), R(1), fn, kernel_dwdr(r, s) / r) * r;
   }
 };
