@@ -41,9 +41,9 @@ Asserted:
    loses the whole 200 kPa. The same for the simple cubic lattice with dp = dx (its own band;
    the fcc control's drift as the noise floor, as it has no control of its own).
    Why eps = 0.2 and dp = D (docs/studies/pair_cell_sph-tension.rst): the strength that counts
-   is eps f(D)^n; weaker (dp = dx on fcc, f(D)^4 = 0.06, with eps up to 0.3) lets the fluid
-   clump, and stronger is unstable in its own way (on the simple cubic lattice, eps = 0.3 to 0.5
-   with dp = D = dx blows the fluid up).
+   is eps f(D)^n; weaker (dp = dx on fcc, where f(D)^4 = 0.29: eps f^4 = 0.06 and 0.09 for eps
+   0.2 and 0.3) lets the fluid clump, and stronger is unstable in its own way (on the simple
+   cubic lattice eps = 0.3 to 0.5 with dp = D = dx blows the fluid up).
 4. In the control the remedy changes nothing: the stress acts only where P < 0, the control's
    pressure stays positive throughout (checked: min d_rho > rho0), so its trajectory with the
    option is the one without it, bit for bit (the dumps compared as text, %.17g).
