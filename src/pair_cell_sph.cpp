@@ -52,8 +52,8 @@ using namespace CellPhysics;
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), kappa(nullptr),
     s(nullptr), sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), stress_eps(0.0),
-    stress_dp(0.0), stress_n(0), wdp(nullptr), fnorm(nullptr), stress_r(nullptr), nmax(0),
-    quant(nullptr), pairs(new CellMech::SPHPairs(_lmp))
+    stress_dp(0.0), stress_n(0), tension(false), wdp(nullptr), fnorm(nullptr), stress_r(nullptr),
+    nmax(0), quant(nullptr), pairs(new CellMech::SPHPairs(_lmp))
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -96,7 +96,8 @@ void PairCellSPH::compute(int eflag, int vflag)
   // the pairs of fix cell/fluid's continuity pass at these positions, or a search of our own
   pairs->find_for_forces(list, type_data());
 
-  if (stress_eps > 0.0)
+  // the artificial stress only where a local or ghost particle is in tension (fluid_quantities)
+  if (stress_eps > 0.0 && tension)
     forces<true>();
   else
     forces<false>();
@@ -203,6 +204,7 @@ void PairCellSPH::fluid_quantities(int eflag)
     memory->destroy(stress_r);
   }
   if (stress_eps > 0.0 && !stress_r) memory->create(stress_r, nmax, "pair:stress_r");
+  tension = false;
   for (int i = 0; i < nall; i++) {
     const int t = type[i];
     double *const q = quant + NQUANT * i;
@@ -212,7 +214,10 @@ void PairCellSPH::fluid_quantities(int eflag)
       q[1] = rmass[i];
       q[2] = inv_rho;
       q[3] = mu[t];
-      if (stress_eps > 0.0) stress_r[i] = sph_stress_r(pressure(t, rho[i]), inv_rho, stress_eps);
+      if (stress_eps > 0.0) {
+        stress_r[i] = sph_stress_r(pressure(t, rho[i]), inv_rho, stress_eps);
+        tension = tension || stress_r[i] > 0.0;
+      }
       if (i < nlocal && eflag) {
         const double ei = rmass[i] * tait_internal_energy(rho[i], rho0[t], c[t], P0[t]);
         if (eflag_global) eng_vdwl += ei;

@@ -81,6 +81,7 @@ class PairCellSPH : public Pair {
   // per local and ghost atom R = eps |P| / rho^2 in tension, else 0 (allocated only when on)
   double stress_eps, stress_dp;
   int stress_n;
+  bool tension;    // some local or ghost particle has R > 0 (this step)
   double **wdp, **fnorm;
   double *stress_r;
   int nmax;
