@@ -16,6 +16,8 @@
    The pair energy is the fluid's internal energy sum_i m_i e(rho_i) with
    de/drho = P/rho^2, so that kinetic + potential energy is the conserved
    total of the inviscid equations.
+   pair_style cell/sph stress adds Monaghan's artificial stress (not the paper's) to the pressure
+   term where a particle is in tension (physics/sph.h; its pair energy joins the energy).
 ------------------------------------------------------------------------- */
 
 #include "pair_cell_sph.h"
