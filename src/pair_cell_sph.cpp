@@ -16,6 +16,8 @@
    The pair energy is the fluid's internal energy sum_i m_i e(rho_i) with
    de/drho = P/rho^2, so that kinetic + potential energy is the conserved
    total of the inviscid equations.
+   pair_style cell/sph stress adds Monaghan's artificial stress (not the paper's) to the pressure
+   term where a particle is in tension (physics/sph.h; its pair energy joins the energy).
 ------------------------------------------------------------------------- */
 
 #include "pair_cell_sph.h"
@@ -51,8 +53,9 @@ using namespace CellPhysics;
 
 PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), kappa(nullptr),
-    s(nullptr), sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), nmax(0), quant(nullptr),
-    pairs(new CellMech::SPHPairs(_lmp))
+    s(nullptr), sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), stress_eps(0.0),
+    stress_dp(0.0), stress_n(0), tension(false), wdp(nullptr), fnorm(nullptr), stress_r(nullptr),
+    nmax(0), quant(nullptr), pairs(new CellMech::SPHPairs(_lmp))
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -63,6 +66,7 @@ PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
 PairCellSPH::~PairCellSPH()
 {
   memory->destroy(quant);
+  memory->destroy(stress_r);
   delete pairs;
   if (allocated) {
     memory->destroy(setflag);
@@ -76,6 +80,8 @@ PairCellSPH::~PairCellSPH()
     memory->destroy(s);
     memory->destroy(sinv);
     memory->destroy(wrnorm);
+    memory->destroy(wdp);
+    memory->destroy(fnorm);
   }
 }
 
@@ -92,6 +98,23 @@ void PairCellSPH::compute(int eflag, int vflag)
   // the pairs of fix cell/fluid's continuity pass at these positions, or a search of our own
   pairs->find_for_forces(list, type_data());
 
+  // the artificial stress only where a local or ghost particle is in tension (fluid_quantities)
+  if (stress_eps > 0.0 && tension)
+    forces<true>();
+  else
+    forces<false>();
+
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   the pair forces of Eq. 5 over this step's fluid pairs; with STRESS (pair_style cell/sph stress)
+   the artificial stress joins the central part. Without it the loop is the same code as before
+   the option existed, so that runs without it keep their bits.
+------------------------------------------------------------------------- */
+
+template <bool STRESS> void PairCellSPH::forces()
+{
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const int *const pair_first = pairs->first();
@@ -100,6 +123,7 @@ void PairCellSPH::compute(int eflag, int vflag)
   const double *const x = atom->x ? atom->x[0] : nullptr;
   const double *const vf = atom->v ? atom->v[0] : nullptr;
   double *const ff = atom->f ? atom->f[0] : nullptr;
+  const int *const type = atom->type;
   const int *const ilist = list->ilist;
   const int inum = list->inum;
   for (int ii = 0; ii < inum; ii++) {
@@ -110,6 +134,10 @@ void PairCellSPH::compute(int eflag, int vflag)
     const double vxi = vf[3 * i], vyi = vf[3 * i + 1], vzi = vf[3 * i + 2];
     const double *const qi = quant + NQUANT * i;
     const double prho2i = qi[0], mi = qi[1], irhoi = qi[2], mui = qi[3];
+    const double *const sinvi = STRESS ? sinv[type[i]] : nullptr;
+    const double *const wdpi = STRESS ? wdp[type[i]] : nullptr;
+    const double *const fnormi = STRESS ? fnorm[type[i]] : nullptr;
+    const double ri = STRESS ? stress_r[i] : 0.0;
     // as drho[i] in SPHPairs::find_pairs: the same additions in the same order, in registers
     double fxi = ff[3 * i], fyi = ff[3 * i + 1], fzi = ff[3 * i + 2];
     for (int k = pair_first[ii]; k < kend; k++) {
@@ -126,7 +154,18 @@ void PairCellSPH::compute(int eflag, int vflag)
       const double dvz = vzi - vf[3 * j + 2];
 
       // Eq. 5: pressure (central) and Morris viscosity (along v_ij), both antisymmetric in i, j
-      const double fp = sph_pressure_fpair(mi, mj, prho2i, qj[0], wr);
+      double fp = sph_pressure_fpair(mi, mj, prho2i, qj[0], wr);
+      double evdwl = 0.0;
+      // the artificial stress where either particle is in tension (R > 0)
+      if (STRESS && ri + stress_r[j] > 0.0) {
+        const int jt = type[j];
+        const double q = std::sqrt(delx * delx + dely * dely + delz * delz) * sinvi[jt];
+        const double f = kernel_w_q(q, fnormi[jt]);
+        const double fn = sph_stress_fn(f, stress_n);
+        fp += sph_stress_fpair(mi, mj, ri, stress_r[j], fn, wr);
+        if (eflag_either)
+          evdwl = sph_stress_energy(mi, mj, ri, stress_r[j], fn * f, wdpi[jt], stress_n);
+      }
       const double fv = sph_viscous_fvel(mi, mj, mui, qj[3], irhoi, qj[2], wr);
       const double fx = fp * delx + fv * dvx;
       const double fy = fp * dely + fv * dvy;
@@ -140,14 +179,12 @@ void PairCellSPH::compute(int eflag, int vflag)
         ff[3 * j + 1] -= fy;
         ff[3 * j + 2] -= fz;
       }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, evdwl, 0.0, fx, fy, fz, delx, dely, delz);
     }
     ff[3 * i] = fxi;
     ff[3 * i + 1] = fyi;
     ff[3 * i + 2] = fzi;
   }
-
-  if (vflag_fdotr) virial_fdotr_compute();
 }
 
 /* ----------------------------------------------------------------------
@@ -166,7 +203,10 @@ void PairCellSPH::fluid_quantities(int eflag)
     nmax = atom->nmax;
     memory->destroy(quant);
     memory->create(quant, NQUANT * nmax, "pair:quant");
+    memory->destroy(stress_r);
   }
+  if (stress_eps > 0.0 && !stress_r) memory->create(stress_r, nmax, "pair:stress_r");
+  tension = false;
   for (int i = 0; i < nall; i++) {
     const int t = type[i];
     double *const q = quant + NQUANT * i;
@@ -176,13 +216,19 @@ void PairCellSPH::fluid_quantities(int eflag)
       q[1] = rmass[i];
       q[2] = inv_rho;
       q[3] = mu[t];
+      if (stress_eps > 0.0) {
+        stress_r[i] = sph_stress_r(pressure(t, rho[i]), inv_rho, stress_eps);
+        tension = tension || stress_r[i] > 0.0;
+      }
       if (i < nlocal && eflag) {
         const double ei = rmass[i] * tait_internal_energy(rho[i], rho0[t], c[t], P0[t]);
         if (eflag_global) eng_vdwl += ei;
         if (eflag_atom) eatom[i] += ei;
       }
-    } else
+    } else {
       q[0] = q[1] = q[2] = q[3] = 0.0;
+      if (stress_eps > 0.0) stress_r[i] = 0.0;
+    }
   }
 }
 
@@ -218,6 +264,8 @@ void PairCellSPH::allocate()
   memory->create(s, np1, np1, "pair:s");
   memory->create(sinv, np1, np1, "pair:sinv");
   memory->create(wrnorm, np1, np1, "pair:wrnorm");
+  memory->create(wdp, np1, np1, "pair:wdp");
+  memory->create(fnorm, np1, np1, "pair:fnorm");
   memory->create(fluid, np1, "pair:fluid");
   memory->create(rho0, np1, "pair:rho0");
   memory->create(c, np1, "pair:c");
@@ -232,29 +280,56 @@ void PairCellSPH::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style cell/sph [search auto|branch|branchless]: the kind of the distance test of the pair
-   search (cell_sph_pairs.h; auto, the default: the faster one, measured as the run goes). Every
-   kind gives the same bits, so the choice is for tests and timing.
+   pair_style cell/sph [search auto|branch|branchless] [stress eps n dp]
+   search: the kind of the distance test of the pair search (cell_sph_pairs.h; auto, the default:
+   the faster one, measured as the run goes). Every kind gives the same bits, so the choice is for
+   tests and timing. stress: Monaghan's artificial stress (physics/sph.h), off by default.
+   A pair_style command given again starts from the defaults.
 ------------------------------------------------------------------------- */
 
 void PairCellSPH::settings(int narg, char **arg)
 {
-  if (narg != 0 && narg != 2)
-    error->all(FLERR,
-               "Illegal pair_style cell/sph command: expected no arguments or 'search KIND', got "
-               "{} arguments",
-               narg);
   pairs->set_search(CellMech::SPHPairs::AUTO);
-  if (narg == 0) return;
-  const std::string key = arg[0], kind = arg[1];
-  if (key != "search")
-    error->all(FLERR, "Illegal pair_style cell/sph command: expected keyword 'search', got '{}'",
-               key);
-  const int search = CellMech::SPHPairs::search_named(kind);
-  if (search < 0)
-    error->all(FLERR, "pair_style cell/sph search: expected auto, branch or branchless, got '{}'",
-               kind);
-  pairs->set_search(search);
+  stress_eps = stress_dp = 0.0;
+  stress_n = 0;
+  int iarg = 0;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key == "search") {
+      if (iarg + 2 > narg)
+        error->all(FLERR, "Illegal pair_style cell/sph command: 'search' needs a kind");
+      const int search = CellMech::SPHPairs::search_named(arg[iarg + 1]);
+      if (search < 0)
+        error->all(FLERR,
+                   "pair_style cell/sph search: expected auto, branch or branchless, got '{}'",
+                   arg[iarg + 1]);
+      pairs->set_search(search);
+      iarg += 2;
+    } else if (key == "stress") {
+      if (iarg + 4 > narg)
+        error->all(FLERR, "Illegal pair_style cell/sph command: 'stress' needs eps n dp, got {}",
+                   narg - iarg - 1);
+      stress_settings(3, arg + iarg + 1);
+      iarg += 4;
+    } else
+      error->all(FLERR,
+                 "Illegal pair_style cell/sph command: expected keyword 'search' or 'stress', "
+                 "got '{}'",
+                 key);
+  }
+}
+
+// stress eps n dp: eps > 0, an integer n >= 1, dp > 0 (checked against the supports in init_one)
+void PairCellSPH::stress_settings(int, char **arg)
+{
+  const char *cmd = "pair_style cell/sph stress";
+  using CellMech::coefficient;
+  using CellMech::Sign;
+  stress_eps = coefficient(lmp, cmd, "strength eps", arg[0], Sign::POSITIVE);
+  stress_n = utils::inumeric(FLERR, arg[1], false, lmp);
+  if (stress_n < 1)
+    error->all(FLERR, "{}: exponent n must be an integer >= 1, got {}", cmd, arg[1]);
+  stress_dp = coefficient(lmp, cmd, "particle spacing dp", arg[2], Sign::POSITIVE);
 }
 
 /* ----------------------------------------------------------------------
@@ -358,6 +433,15 @@ double PairCellSPH::init_one(int i, int j)
   s[j][i] = s[i][j];
   sinv[i][j] = sinv[j][i] = 1.0 / s[i][j];
   wrnorm[i][j] = wrnorm[j][i] = kernel_wr_norm(s[i][j]);
+  if (stress_eps > 0.0) {
+    if (stress_dp >= 2.0 * s[i][j])
+      error->all(FLERR,
+                 "pair_style cell/sph stress: particle spacing dp {} must lie inside the kernel's "
+                 "support 2s = {} of types {} and {}",
+                 stress_dp, 2.0 * s[i][j], i, j);
+    wdp[i][j] = wdp[j][i] = kernel_w(stress_dp, s[i][j]);
+    fnorm[i][j] = fnorm[j][i] = kernel_w_norm(s[i][j]) / wdp[i][j];
+  }
   return 2.0 * s[i][j];
 }
 
@@ -406,10 +490,17 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
   }
   const double *rho = atom->dvector[irho];
   const double wr = kernel_wr(rsq, sinv[itype][jtype], wrnorm[itype][jtype]);
-  fforce = sph_pressure_fpair(atom->rmass[i], atom->rmass[j],
-                              pressure(itype, rho[i]) / (rho[i] * rho[i]),
-                              pressure(jtype, rho[j]) / (rho[j] * rho[j]), wr);
-  return 0.0;
+  const double mi = atom->rmass[i], mj = atom->rmass[j];
+  const double Pi = pressure(itype, rho[i]), Pj = pressure(jtype, rho[j]);
+  fforce = sph_pressure_fpair(mi, mj, Pi / (rho[i] * rho[i]), Pj / (rho[j] * rho[j]), wr);
+  if (stress_eps <= 0.0) return 0.0;
+  // the artificial stress and its pair energy
+  const double ri = sph_stress_r(Pi, 1.0 / rho[i], stress_eps);
+  const double rj = sph_stress_r(Pj, 1.0 / rho[j], stress_eps);
+  const double f = kernel_w_q(std::sqrt(rsq) * sinv[itype][jtype], fnorm[itype][jtype]);
+  const double fn = sph_stress_fn(f, stress_n);
+  fforce += sph_stress_fpair(mi, mj, ri, rj, fn, wr);
+  return sph_stress_energy(mi, mj, ri, rj, fn * f, wdp[itype][jtype], stress_n);
 }
 
 void *PairCellSPH::extract(const char *str, int &dim)

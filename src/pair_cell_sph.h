@@ -75,6 +75,15 @@ class PairCellSPH : public Pair {
   double **s;                    // per type pair: smoothing length (cutoff 2s)
   double **sinv, **wrnorm;       // per type pair: 1 / s and kernel_wr_norm(s)
   int irho, idrho;               // indices of d_rho, d_drho in atom->dvector
+  // Monaghan's artificial stress (pair_style cell/sph stress eps n dp; eps 0: off, the default):
+  // its strength, exponent and particle spacing; per type pair W(dp) and the prefactor of f =
+  // W(r) / W(dp) for kernel_w_q, kernel_w_norm(s) / W(dp) (init_one);
+  // per local and ghost atom R = eps |P| / rho^2 in tension, else 0 (allocated only when on)
+  double stress_eps, stress_dp;
+  int stress_n;
+  bool tension;    // some local or ghost particle has R > 0 (this step)
+  double **wdp, **fnorm;
+  double *stress_r;
   int nmax;
   // per local and ghost atom, once per step: P / rho^2, m, 1 / rho, mu
   static constexpr int NQUANT = 4;
@@ -86,6 +95,9 @@ class PairCellSPH : public Pair {
   void allocate();
   CellMech::SPHTypeData type_data() const;
   void fluid_quantities(int eflag);
+  // Eq. 5 over the pairs; with STRESS, the artificial stress as well
+  template <bool STRESS> void forces();
+  void stress_settings(int narg, char **arg);
 };
 
 }    // namespace LAMMPS_NS

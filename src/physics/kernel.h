@@ -18,16 +18,27 @@ namespace CellPhysics {
 // Cubic-spline kernel of smoothing length s, support 2s. Eq. 3 (unit integral) fixes the
 // prefactor at 3 / (2 pi s^3) for this bracket; the 2 / (3 pi s^3) printed in Eq. 4 does not
 // integrate to one (docs/model.md, section 5).
-inline double kernel_w(double r, double s)
+// kernel_w_q: the bracket at q = r / s times a prefactor that a pair loop computes once per type
+// pair (kernel_w_norm(s), or that over W(r_ref) for the ratio W(r) / W(r_ref)), so that no
+// division is left per pair.
+inline double kernel_w_norm(double s)
 {
-  const double q = r / s;
-  const double norm = 3.0 / (2.0 * M_PI * s * s * s);
+  return 3.0 / (2.0 * M_PI * s * s * s);
+}
+
+inline double kernel_w_q(double q, double norm)
+{
   if (q < 1.0) return norm * (2.0 / 3.0 - q * q + 0.5 * q * q * q);
   if (q < 2.0) {
     const double u = 2.0 - q;
     return norm * u * u * u / 6.0;
   }
   return 0.0;
+}
+
+inline double kernel_w(double r, double s)
+{
+  return kernel_w_q(r / s, kernel_w_norm(s));
 }
 
 // dW/dr; the gradient is dW/dr times the unit vector r_ij / r. Its prefactor depends on s only: a

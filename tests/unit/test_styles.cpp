@@ -391,8 +391,17 @@ class Fluid : public Lmp {
 TEST_F(Fluid, SphBadInput)
 {
   box();
-  EXPECT_ERROR("pair_style cell/sph 1", "pair_style cell/sph.*expected no arguments");
-  cmd("pair_style cell/sph");
+  EXPECT_ERROR("pair_style cell/sph 1",
+               "pair_style cell/sph.*expected keyword 'search' or 'stress'");
+  EXPECT_ERROR("pair_style cell/sph search", "'search' needs a kind");
+  EXPECT_ERROR("pair_style cell/sph stress 0.2 4", "'stress' needs eps n dp, got 2");
+  EXPECT_ERROR("pair_style cell/sph stress 0 4 1", "stress: strength eps must be > 0");
+  EXPECT_ERROR("pair_style cell/sph stress 0.2 0 1", "stress: exponent n must be an integer >= 1");
+  EXPECT_ERROR("pair_style cell/sph stress 0.2 4 -1", "stress: particle spacing dp must be > 0");
+  cmds({"pair_style cell/sph stress 0.2 4 6.4", "pair_coeff * * 1 264.6 0 1 3.2",
+        "comm_modify vel yes"});
+  EXPECT_ERROR("run 0", "stress: particle spacing dp 6.4 must lie inside the kernel's support");
+  cmds({"comm_modify vel no", "pair_style cell/sph"});
   EXPECT_ERROR("pair_coeff 2 2 1 264.6 0 1", "pair_coeff cell/sph.*expected.*rho0 c P0 mu s");
   EXPECT_ERROR("pair_coeff 2 2 0 264.6 0 1 3.2", "reference density rho0 must be > 0");
   EXPECT_ERROR("pair_coeff 2 2 1 -1 0 1 3.2", "sound speed c must be > 0");

@@ -184,3 +184,84 @@ TEST(Density, MassChangeKeepsParticleVolume)
   EXPECT_LT(worst, 1e-15);
   EXPECT_EQ(density_increment(rho, m, 2.5, 1e-3, 0.0), 2.5e-3);
 }
+
+// Monaghan's artificial stress (sph_stress_*, pair_style cell/sph stress): Table I's fluid at the
+// coarse level's smoothing length, two particles in tension, Monaghan's eps = 0.2 and n = 4, the
+// particle spacing dp = s / 1.12 (the coarse cell's s / dx).
+struct StressPair {
+  double s = 6.4, dp = 6.4 / 1.12, eps = 0.2, rho0 = 1.0, c = 264.6;
+  double m[2] = {180.0, 190.0}, rho[2] = {0.9971, 0.9985};
+  int n = 4;
+  double R(int k) const
+  {
+    return sph_stress_r(tait_pressure(rho[k], rho0, c, 0.0), 1.0 / rho[k], eps);
+  }
+  double U(double r) const
+  {
+    // f from W itself, the definition
+    const double wdp = kernel_w(dp, s);
+    return sph_stress_energy(m[0], m[1], R(0), R(1), sph_stress_fn(kernel_w(r, s) / wdp, n + 1),
+                             wdp, n);
+  }
+  // the radial force on 0 from 1, F_ij . r_ij / r = fs r
+  double Fr(double r) const
+  {
+    // f as pair cell/sph computes it: the bracket at q = r (1/s) times kernel_w_norm(s) / W(dp)
+    const double f = kernel_w_q(r * (1.0 / s), kernel_w_norm(s) / kernel_w(dp, s));
+    const double fn = sph_stress_fn(f, n);
+    return sph_stress_fpair(m[0], m[1], R(0), R(1), fn, kernel_dwdr(r, s) / r) * r;
+  }
+};
+
+TEST(SPH, ArtificialStressIsMinusGradientOfItsEnergy)
+{
+  // at fixed R_i + R_j the pair force is -dU/dr of U = m_i m_j (R_i + R_j) W(dp) f^(n+1) / (n+1):
+  // central differences of U at distances across both branches of the kernel, n = 1 to 6. Near the
+  // support U ~ (2 - q)^(3(n+1)) is steep: the truncation h^2 U''' / (6 U') ~ (3(n+1))^2 h^2 /
+  // (6 (2s - r)^2) is 3e-7 at q = 1.9 with h = 1e-5 s, so h = 1e-6 s (3e-9; round-off eps U / (h U')
+  // at most 1e-8 of the force, at q = 0.15)
+  StressPair p;
+  double worst = 0.0;
+  for (int n = 1; n <= 6; n++) {
+    p.n = n;
+    for (double q : {0.15, 0.5, 0.93, 1.07, 1.5, 1.9}) {
+      const double r = q * p.s, h = 1e-6 * p.s;
+      const double dUdr = (p.U(r + h) - p.U(r - h)) / (2.0 * h);
+      const double err = std::fabs(p.Fr(r) + dUdr) / std::fabs(dUdr);
+      worst = std::max(worst, err);
+      if (n == 4)
+        std::printf("n 4 r/s %.2f: F_r %.10g  -dU/dr %.10g  rel.err %.1e\n", q, p.Fr(r), -dUdr,
+                    err);
+    }
+  }
+  EXPECT_LT(worst, 1e-7);
+}
+
+TEST(SPH, ArtificialStressLimits)
+{
+  StressPair p;
+  // R = eps |P| / rho^2 in tension; no stress at or above zero pressure
+  const double P = tait_pressure(p.rho[0], p.rho0, p.c, 0.0);
+  EXPECT_LT(P, 0.0);
+  EXPECT_DOUBLE_EQ(p.R(0), -p.eps * P / (p.rho[0] * p.rho[0]));
+  EXPECT_EQ(sph_stress_r(0.0, 1.0, p.eps), 0.0);
+  EXPECT_EQ(sph_stress_r(364.0, 1.0, p.eps), 0.0);
+  EXPECT_EQ(sph_stress_fpair(p.m[0], p.m[1], 0.0, 0.0, 0.7, -0.1), 0.0);
+  // f = 1 at the particle spacing: F_r = -m_i m_j (R_i + R_j) dW/dr(dp), U = m_i m_j R W(dp)/(n+1)
+  const double Rs = p.R(0) + p.R(1);
+  EXPECT_NEAR(p.Fr(p.dp), -p.m[0] * p.m[1] * Rs * kernel_dwdr(p.dp, p.s),
+              1e-14 * std::fabs(p.Fr(p.dp)));
+  EXPECT_NEAR(p.U(p.dp), p.m[0] * p.m[1] * Rs * kernel_w(p.dp, p.s) / 5.0, 1e-14 * p.U(p.dp));
+  // a repulsion inside the support, growing as the pair closes in (down to r = 0.6 s, below the
+  // kernel's steepest point 2s/3: f^n keeps rising there), nothing beyond it
+  double last = 0.0;
+  for (double q = 1.95; q > 0.6; q -= 0.05) {
+    EXPECT_GT(p.Fr(q * p.s), last) << "r/s " << q;
+    last = p.Fr(q * p.s);
+  }
+  EXPECT_EQ(p.Fr(2.0 * p.s), 0.0);
+  EXPECT_EQ(p.U(2.0 * p.s), 0.0);
+  // symmetric in i, j: the pair's forces cancel (momentum)
+  EXPECT_EQ(sph_stress_fpair(p.m[0], p.m[1], p.R(0), p.R(1), 0.3, -0.2),
+            sph_stress_fpair(p.m[1], p.m[0], p.R(1), p.R(0), 0.3, -0.2));
+}
