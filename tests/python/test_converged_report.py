@@ -217,28 +217,26 @@ def test_the_failure_stress_converges_only_where_the_2v_peak_agrees():
     assert b - a > C.TOL_STRAIN and C.failure_cells(later)[1] == f"({a:.1%} at v; {b:.1%} at 2v)"
 
 
-def test_the_kinetic_energy_is_judged_in_every_window():
-    """A window counts as converged only if it passes all three checks: the plates balance and the
-    two speeds agree, but the kinetic energy holds 2% of the plates' work from the modulus window
-    on: no modulus has converged, and the verdict says why."""
+def test_one_judgement_of_the_windows_decides_and_the_verdict_says_it():
+    """The modulus's `converged`, the `converged from` strain and the verdict come from one
+    judgement of the windows (balance and rate, as the speed ladder's): a window whose plates part
+    makes the modulus unconverged and the verdict names the check; the kinetic energy is printed
+    but decides nothing (the coarse fluid holds 3-10% of the work at any speed)."""
     e = np.linspace(0.0, 0.1, 201)
 
     def ringing(share):
         d = record(e, 800.0 * e)
         d[Q.KE] = share * d[Q.WORK]
         return d
-    quiet = C.measure(COMP, ringing(0.2 * Q.TOL_KE), record(e, 800.0 * e))
-    assert quiet["converged"] and quiet["start"] == COMP.start
     loud = C.measure(COMP, ringing(2 * Q.TOL_KE), record(e, 800.0 * e))
-    assert loud["rate"] < 1e-12 and loud["balance"] < 1e-12               # balance and rate pass
-    assert not loud["converged"] and loud["start"] is None and "ke_over_work" in loud["verdict"]
-    assert C.modulus_cell(loud) == "not converged (800 at v)"
-    assert C.compare(COMP, {(-364, "strong"): loud}).startswith("Neither a modulus nor a failure stress")
-    # ringing only before the modulus window: converged from it on, the verdict saying so
-    early = ringing(2 * Q.TOL_KE)
-    early[Q.KE] = np.where(e < 0.04, early[Q.KE], 0.2 * Q.TOL_KE * early[Q.WORK])
-    m = C.measure(COMP, early, record(e, 800.0 * e))
-    assert m["converged"] and abs(m["start"] - 0.04) < 1e-9 and "from 4%" in m["verdict"]
+    assert loud["converged"] and loud["start"] == COMP.start and abs(loud["ke"] - 2 * Q.TOL_KE) < 1e-9
+    assert "ke_over_work" not in loud["verdict"] and loud["verdict"].startswith("converged")
+    # the plates part before the modulus window ends: not converged, and the verdict says balance
+    d = record(e, 800.0 * e)
+    d["F_bottom_nN"] = np.where(e < 0.05, 0.8 * d["F_bottom_nN"], d["F_bottom_nN"])
+    m = C.measure(COMP, d, record(e, 800.0 * e))
+    assert not m["converged"] and m["start"] is not None and m["start"] >= 0.05 - 1e-9
+    assert "balance" in m["verdict"] and C.modulus_cell(m) == "not converged (800 at v)"
 
 
 def stopped_runs(tmp_path, ends):

@@ -254,7 +254,7 @@ def section(rep, dirs):
           f"compressed with {C.KINDS['compress'].protocol}; pulled apart with {C.KINDS['tension'].protocol}. "
           "Every number and verdict below is cellmech.tissue.converged's (the campaign's own report says how each "
           "is measured): the modulus is the slope over its window where the condition has converged (a window "
-          f"converges when it passes all three checks of cellmech.quasistatic: {C.window_rule(C.KINDS['compress'])}"
+          f"converges when it passes the checks of cellmech.quasistatic that decide: {C.window_rule(C.KINDS['compress'])}"
           " (the grips' in a tension); the modulus when every window from the modulus window on does, to the peak "
           "in a tension, the block intact), else *not converged* with the value at v in brackets; the failure "
           f"stress and strain where the failure has converged ({C.failure_rule(C.KINDS['compress'])}; in a "
