@@ -6,7 +6,7 @@ import numpy as np
 
 from cellmech import quasistatic as Q
 from cellmech.tissue import converged as C
-from cellmech.tissue.tissuedata import COMPRESS
+from cellmech.tissue.tissuedata import COMPRESS, fmt
 
 # the two experiments the report judges (the Kind each of its functions is given)
 COMP, TENS = C.KINDS["compress"], C.KINDS["tension"]
@@ -75,7 +75,8 @@ def test_a_run_stopped_by_an_error_is_named_with_where_it_stopped(tmp_path):
         (d / "log.lammps").write_text(run + ("ERROR on proc 0: Bond style cell/tether: atom 7 moved\n"
                                              if speed == 0.25 else
                                              "Loop time of 60 on 1 procs\nERROR: Unknown command: rea\n"))
-    v, slow, fast, notes = C.load_runs(COMP, str(tmp_path))[-100, "weak"]
+    v, slow, fast, errors = C.load_runs(COMP, str(tmp_path))[-100, "weak"]
+    notes = C.stop_notes(v, slow, fast, errors)
     assert v == 0.25 and len(notes) == 1
     assert notes[0].startswith("the run at 0.25 m/s stopped at 5.0% strain: ERROR on proc 0: Bond style")
     assert "Stopped early" in C.stopped_text({(-100, "weak"): {"notes": notes}})
@@ -187,3 +188,85 @@ def test_the_report_is_written_as_the_kind_named(tmp_path):
     assert "| modulus 1%-2% (kPa) |" in md and "| grips (worst) |" in md
     row = next(ln for ln in md.split("\n") if ln.startswith("| -100 | weak |"))
     assert row.split("|")[3].strip() == "0.0625" and abs(float(row.split("|")[5]) - 300.0) < 1e-6
+
+
+def peaked(e, top=9.0, at=0.06, rupture=0.055):
+    """A stress that rises linearly to `top` at strain `at` and falls after it (a failure), the walls
+    beginning to rupture at strain `rupture`."""
+    s = np.where(e < at, top * e / at, top - 400.0 * (e - at))
+    d = record(e, s)
+    d["broken_tethers"] = np.where(e >= rupture, 10.0, 0.0)
+    return d
+
+
+def test_the_failure_stress_converges_only_where_the_2v_peak_agrees():
+    """Both speeds begin to fail at the same strain, but the peak stress or its strain moves with the
+    speed: the failure has not converged, and the report gives both."""
+    e = np.linspace(0.0, 0.1, 401)
+    slow = peaked(e)
+    assert C.measure(COMP, slow, peaked(e))["failure_converged"]            # the same peak: converged
+    higher = C.measure(COMP, slow, peaked(e, top=9.0 * 1.1))                 # 10% higher at 2v
+    later = C.measure(COMP, slow, peaked(e, at=0.075))                      # 1.5% strain later at 2v
+    for m in (higher, later):
+        assert m["first_converged"] and not m["rising"] and not m["failure_converged"]
+    p, p2 = higher["fail"]["peak_kPa"], higher["fail_fast"]["peak_kPa"]
+    assert p2 > (1 + Q.TOL_RATE) * p                                      # beyond the tolerance
+    cell = f"not converged ({fmt(p)} at v; {fmt(p2)} at 2v)"
+    assert C.failure_cells(higher)[0] == cell and f"| {cell} |" in C.table(COMP, {(-100, "weak"): dict(higher, v=0.25)})
+    a, b = later["fail"]["strain_at_peak"], later["fail_fast"]["strain_at_peak"]
+    assert b - a > C.TOL_STRAIN and C.failure_cells(later)[1] == f"({a:.1%} at v; {b:.1%} at 2v)"
+
+
+def test_one_judgement_of_the_windows_decides_and_the_verdict_says_it():
+    """The modulus's `converged`, the `converged from` strain and the verdict come from one
+    judgement of the windows (balance and rate, as the speed ladder's): a window whose plates part
+    makes the modulus unconverged and the verdict names the check; the kinetic energy is printed
+    but decides nothing (the coarse fluid holds 3-10% of the work at any speed)."""
+    e = np.linspace(0.0, 0.1, 201)
+
+    def ringing(share):
+        d = record(e, 800.0 * e)
+        d[Q.KE] = share * d[Q.WORK]
+        return d
+    loud = C.measure(COMP, ringing(2 * Q.TOL_KE), record(e, 800.0 * e))
+    assert loud["converged"] and loud["start"] == COMP.start and abs(loud["ke"] - 2 * Q.TOL_KE) < 1e-9
+    assert "ke_over_work" not in loud["verdict"] and loud["verdict"].startswith("converged")
+    # the plates part before the modulus window ends: not converged, and the verdict says balance
+    d = record(e, 800.0 * e)
+    d["F_bottom_nN"] = np.where(e < 0.05, 0.8 * d["F_bottom_nN"], d["F_bottom_nN"])
+    m = C.measure(COMP, d, record(e, 800.0 * e))
+    assert not m["converged"] and m["start"] is not None and m["start"] >= 0.05 - 1e-9
+    assert "balance" in m["verdict"] and C.modulus_cell(m) == "not converged (800 at v)"
+
+
+def stopped_runs(tmp_path, ends):
+    """Run folders of condition Pi -364, strong at 0.25 and 0.5 m/s, both peaking at 6% strain; the
+    run at each speed in `ends` stops there with an ERROR inside its run."""
+    e = np.linspace(0.0, 0.1, 401)
+    for speed in (0.25, 0.5):
+        d = tmp_path / f"compress-364-strong-{speed:g}"
+        d.mkdir()
+        r, keep = peaked(e), e <= ends.get(speed, 1.0) + 1e-12
+        np.savetxt(d / "tissue-compress.dat", np.column_stack([np.arange(keep.sum())] + [r[n][keep] for n in COMPRESS]))
+        run = "Per MPI rank memory allocation (min/avg/max) = 20 | 20 | 20 Mbytes\n"
+        (d / "log.lammps").write_text(run + ("ERROR on proc 0: Bond style cell/tether: atom 7 moved\n"
+                                             if speed in ends else "Loop time of 60 on 1 procs\n"))
+    return C.conditions(COMP, str(tmp_path))[1][-364, "strong"]
+
+
+def test_a_failure_next_to_an_error_stop_has_not_converged(tmp_path):
+    """The run at 2v blew up 0.5% strain after its peak: its peak may be the blow-up's, so the
+    failure has not converged and the row says where the run stopped."""
+    (tmp_path / "a").mkdir()
+    assert stopped_runs(tmp_path / "a", {})["failure_converged"]           # no error: converged
+    (tmp_path / "b").mkdir()
+    m = stopped_runs(tmp_path / "b", {0.5: 0.065})
+    assert m["first_converged"] and not m["rising"] and not m["failure_converged"]
+    assert C.failure_cells(m)[0] == "run at 2v stopped at 6.5% (error)"
+    # the run at v stopped there: the table names the error, not a stress still rising
+    (tmp_path / "c").mkdir()
+    m = stopped_runs(tmp_path / "c", {0.25: 0.065})
+    assert not m["failure_converged"] and C.failure_cells(m)[0] == "run stopped at 6.5% (error)"
+    # an error 3% of strain past the peak, the stress long fallen: the peak stands
+    (tmp_path / "d").mkdir()
+    assert stopped_runs(tmp_path / "d", {0.5: 0.09})["failure_converged"]

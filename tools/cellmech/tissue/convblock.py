@@ -77,29 +77,6 @@ def first_fast(m):
     return min(f.values()) if f else None
 
 
-def modulus_cell(m):
-    if m["converged"]:
-        return fmt(m["E"])
-    if m["burst"]:
-        return "burst before loading"
-    if not np.isfinite(m["E"]):
-        return "- (failed before the window ends)"
-    return f"not converged ({fmt(m['E'])} at v)"
-
-
-def failure_cells(m):
-    """(failure stress, strain at peak) as the table gives them: a number only where the failure
-    has converged."""
-    f = m["fail"]
-    if m["burst"]:
-        return "burst before loading", "-"
-    if m["rising"]:
-        return f"> {fmt(f['peak_kPa'])} (still rising)", f"> {C.pct(f['strain_at_peak'])}"
-    if m["failure_converged"]:
-        return fmt(f["peak_kPa"]), C.pct(f["strain_at_peak"])
-    return f"not converged ({fmt(f['peak_kPa'])} at v)", f"({C.pct(f['strain_at_peak'])} at v)"
-
-
 def mode_cell(m):
     if m["burst"]:
         return "burst before loading"
@@ -116,8 +93,8 @@ def table(c):
             f"{k.ends} (worst) | KE/W (worst) | vs 2v (worst) | converged from |")
     lines = [head, "|" + "---|" * 14]
     for (pi, lam), m in c.rows.items():
-        peak, at = failure_cells(m)
-        lines.append(f"| {pi} | {lam} | {m['v']:g} | {m['P0']:.0f} | {modulus_cell(m)} | {peak} | {at} | "
+        peak, at = C.failure_cells(m)
+        lines.append(f"| {pi} | {lam} | {m['v']:g} | {m['P0']:.0f} | {C.modulus_cell(m)} | {peak} | {at} | "
                      f"{C.pct(m['first_event'])}; {C.pct(first_fast(m))} | {mode_cell(m)} | {C.judged(m)} | "
                      f"{C.pct(m['balance'])} | {C.pct(m['ke'])} | {C.pct(m['rate'])} | "
                      f"{'-' if m['start'] is None else C.strain_pct(m['start'])} |")
@@ -156,7 +133,12 @@ def jsonable(m):
     return {"v_m_s": m["v"], "P_start_kPa": m["P0"], "modulus_kPa": num(m["E"]), "modulus_converged": m["converged"],
             "failure_stress_kPa": None if m["burst"] else f["peak_kPa"],
             "strain_at_peak": None if m["burst"] else f["strain_at_peak"], "still_rising": m["rising"],
-            "failure_converged": m["failure_converged"], "first_event_strain": m["first_event"],
+            "failure_converged": m["failure_converged"],
+            "failure_stress_2v_kPa": None if m["burst"] else m["fail_fast"]["peak_kPa"],
+            "strain_at_peak_2v": None if m["burst"] else m["fail_fast"]["strain_at_peak"],
+            "peak_agrees_2v": m["peak_agrees"],
+            "stopped_by_error_after_peak": [{"run": which, "strain": at} for which, at in m["stopped"]],
+            "first_event_strain": m["first_event"],
             "first_event_strain_2v": first_fast(m), "first_event_converged": m["first_converged"],
             "mode": "burst before loading" if m["burst"] else f["mode"], "mode_2v": m["fail_fast"]["mode"],
             "burst_before_loading": m["burst"], "judged_strain": list(m["judged"]), "balance_worst": num(m["balance"]),
@@ -271,14 +253,18 @@ def section(rep, dirs):
           f"{C.lamella_words(c0.lams)} and brought to rest, then loaded to failure at two speeds, v and 2v: "
           f"compressed with {C.KINDS['compress'].protocol}; pulled apart with {C.KINDS['tension'].protocol}. "
           "Every number and verdict below is cellmech.tissue.converged's (the campaign's own report says how each "
-          "is measured): the modulus is the slope over its window where the condition has converged (the plates or "
-          "grips balance within 5% and the curve agrees with 2v within 5% in every window from the modulus window "
-          "on, the block intact), else *not converged* with the value at v in brackets; the failure stress and "
-          "strain where the failure has converged (the first failure at both speeds within 1% strain, a real "
-          "peak), *> X* where the stress still rose at the record's end; *burst before loading*: a wall "
-          "ruptured under its own turgor before the loading began. Evidence: *judged* (the strain range of the "
-          "checks), the worst plate (grip) balance, KE/W (printed, not judged), the worst difference to 2v, and "
-          "the strain from which every window passes (*converged from*).", "")
+          "is measured): the modulus is the slope over its window where the condition has converged (a window "
+          f"converges when it passes the checks of cellmech.quasistatic that decide: {C.window_rule(C.KINDS['compress'])}"
+          " (the grips' in a tension); the modulus when every window from the modulus window on does, to the peak "
+          "in a tension, the block intact), else *not converged* with the value at v in brackets; the failure "
+          f"stress and strain where the failure has converged ({C.failure_rule(C.KINDS['compress'])}; in a "
+          f"tension the walls intact at {C.strain_pct(C.KINDS['tension'].start)}), else *not converged* with "
+          "the values at v and at 2v, or *run stopped at X% (error)*; *> X* where the stress still rose at the "
+          "record's end; *burst before loading*: a wall ruptured under its own turgor before the loading began. "
+          "Evidence: *judged* (the strain range of the checks), the worst plate (grip) balance, the worst KE/W "
+          "(per window: the window-mean kinetic energy of all atoms over the window-mean work of the plates or "
+          "grips since the record's start), the worst difference to 2v, and the strain from which every window "
+          "passes all three (*converged from*).", "")
     for n, c in enumerate(cs, 1):
         text_campaign(rep, n, c)
     rep.S["block_converged"] = [{"cells": c.cells, "experiment": c.kind.stage, "runs": c.runs, "page": c.page,
