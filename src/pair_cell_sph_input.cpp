@@ -1,24 +1,142 @@
 /* ----------------------------------------------------------------------
    SPDX-License-Identifier: GPL-2.0-or-later
-   cellmech: pair style cell/sph, its input checks at init (the respa level, the kernel's reach
-   of the fluid spacing, the acoustic time step, the fluid atoms' mass, density and bonds): kept
-   apart from the reference style's equations, as the pair machinery is (cell_sph_pairs.cpp)
+   cellmech: pair style cell/sph, its input: the pair_style keywords and the pair_coeff
+   coefficients, and the checks at init (the respa level, the kernel's reach of the fluid spacing,
+   the acoustic time step, the fluid atoms' mass, density and bonds): kept apart from the
+   reference style's equations, as the pair machinery is (cell_sph_pairs.cpp)
 ------------------------------------------------------------------------- */
 
 #include "pair_cell_sph.h"
 
 #include "cell_checks.h"
+#include "cell_coeff.h"
+#include "cell_sph_pairs.h"
 
 #include "atom.h"
 #include "error.h"
+#include "physics/tait.h"
 #include "modify.h"
 #include "respa.h"
 #include "update.h"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 using namespace LAMMPS_NS;
+using namespace CellPhysics;
+
+/* ----------------------------------------------------------------------
+   pair_style cell/sph [search auto|branch|branchless] [stress eps n dp]
+   search: the kind of the distance test of the pair search (cell_sph_pairs.h; auto, the default:
+   the faster one, measured as the run goes). Every kind gives the same bits, so the choice is for
+   tests and timing. stress: Monaghan's artificial stress (physics/sph.h), off by default.
+   A pair_style command given again starts from the defaults.
+------------------------------------------------------------------------- */
+
+void PairCellSPH::settings(int narg, char **arg)
+{
+  pairs->set_search(CellMech::SPHPairs::AUTO);
+  stress_eps = stress_dp = 0.0;
+  stress_n = 0;
+  int iarg = 0;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key == "search") {
+      if (iarg + 2 > narg)
+        error->all(FLERR, "Illegal pair_style cell/sph command: 'search' needs a kind");
+      const int search = CellMech::SPHPairs::search_named(arg[iarg + 1]);
+      if (search < 0)
+        error->all(FLERR,
+                   "pair_style cell/sph search: expected auto, branch or branchless, got '{}'",
+                   arg[iarg + 1]);
+      pairs->set_search(search);
+      iarg += 2;
+    } else if (key == "stress") {
+      if (iarg + 4 > narg)
+        error->all(FLERR, "Illegal pair_style cell/sph command: 'stress' needs eps n dp, got {}",
+                   narg - iarg - 1);
+      stress_settings(3, arg + iarg + 1);
+      iarg += 4;
+    } else
+      error->all(FLERR,
+                 "Illegal pair_style cell/sph command: expected keyword 'search' or 'stress', "
+                 "got '{}'",
+                 key);
+  }
+}
+
+// stress eps n dp: eps > 0, an integer n >= 1, dp > 0 (checked against the supports in init_one)
+void PairCellSPH::stress_settings(int, char **arg)
+{
+  const char *cmd = "pair_style cell/sph stress";
+  using CellMech::coefficient;
+  using CellMech::Sign;
+  stress_eps = coefficient(lmp, cmd, "strength eps", arg[0], Sign::POSITIVE);
+  stress_n = utils::inumeric(FLERR, arg[1], false, lmp);
+  if (stress_n < 1)
+    error->all(FLERR, "{}: exponent n must be an integer >= 1, got {}", cmd, arg[1]);
+  stress_dp = coefficient(lmp, cmd, "particle spacing dp", arg[2], Sign::POSITIVE);
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I I rho0 c P0 mu s    a fluid type: equation of state, viscosity, smoothing length
+   pair_coeff I J s                 smoothing length between two fluid types (default: mean)
+------------------------------------------------------------------------- */
+
+void PairCellSPH::coeff(int narg, char **arg)
+{
+  if (narg != 7 && narg != 3)
+    error->all(FLERR,
+               "Incorrect number of args for pair_coeff cell/sph: expected "
+               "'pair_coeff I I rho0 c P0 mu s' or 'pair_coeff I J s', got {} arguments",
+               narg);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  int count = 0;
+  if (narg == 7) {
+    if (ilo != jlo || ihi != jhi)
+      error->all(FLERR,
+                 "pair_coeff cell/sph: the equation of state belongs to one fluid type; use "
+                 "'pair_coeff I I rho0 c P0 mu s' (and 'pair_coeff I J s' between fluid types)");
+    const char *cmd = "pair_coeff cell/sph";
+    using CellMech::coefficient;
+    using CellMech::Sign;
+    const double rho0_one = coefficient(lmp, cmd, "reference density rho0", arg[2], Sign::POSITIVE);
+    const double c_one = coefficient(lmp, cmd, "sound speed c", arg[3], Sign::POSITIVE);
+    const double P0_one = coefficient(lmp, cmd, "background pressure P0", arg[4], Sign::ANY);
+    const double mu_one = coefficient(lmp, cmd, "viscosity mu", arg[5], Sign::NON_NEGATIVE);
+    const double s_one = coefficient(lmp, cmd, "smoothing length s", arg[6], Sign::POSITIVE);
+    for (int i = ilo; i <= ihi; i++) {
+      fluid[i] = 1;
+      rho0[i] = rho0_one;
+      c[i] = c_one;
+      kappa[i] = tait_kappa(rho0_one, c_one);
+      P0[i] = P0_one;
+      mu[i] = mu_one;
+      s[i][i] = s_one;
+      setflag[i][i] = 1;
+      count++;
+    }
+  } else {
+    const double s_one = CellMech::coefficient(lmp, "pair_coeff cell/sph", "smoothing length s",
+                                               arg[2], CellMech::Sign::POSITIVE);
+    for (int i = ilo; i <= ihi; i++)
+      for (int j = MAX(jlo, i); j <= jhi; j++) {
+        if (i == j)
+          error->all(FLERR, "pair_coeff cell/sph: type {} needs 'pair_coeff {} {} rho0 c P0 mu s'",
+                     i, i, i);
+        s[i][j] = s_one;
+        setflag[i][j] = 1;
+        count++;
+      }
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
 
 /* ----------------------------------------------------------------------
    fix cell/fluid advances the density on respa's outermost level, with the continuity pass whose
