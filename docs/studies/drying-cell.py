@@ -5,16 +5,18 @@ in.inflate, then in.water-potential with the solutes kept from psi_ext = 0 to PS
   ac [RESTART [DELTA]]  the wall area per own-cell fluid-virtual contact within r0 + delta
            (A_c of Fa >= |P| A_c), the contact counts and the fluid's nearest-neighbour distance
   run TAG  in.water-potential with the extra -var NAME VALUE pairs that follow (TAG.csv)
+  cavity RESTART  the fluid-free space inside the wall of a state (-var save 1 of a run)
   table TAG...  the levels of the runs against the reference (wall law + Young-Laplace above zero
            turgor, Boyle-van 't Hoff with a slack wall below)
 LEVEL=4 and WALL=bending in the environment change the resolution and the wall (the same for
 every step). Run it from an empty folder with the environment of tests/ (LMP, CELLMECH_PLUGIN,
-PYTHONPATH=tools); the study's runs (b) and the Fa scan:
+PYTHONPATH=tools); the study's runs (a), (b) and one of the Fa-delta scan (the others alike):
   python3 docs/studies/drying-cell.py inflate
-  python3 docs/studies/drying-cell.py ac
+  python3 docs/studies/drying-cell.py ac inflated.restart 0.2
   python3 docs/studies/drying-cell.py run a
-  python3 docs/studies/drying-cell.py run b Fa 2e4 delta 0.2 sphstress 0.2
+  python3 docs/studies/drying-cell.py run b Fa 2e4 delta 0.2 sphstress 0.2 save 1
   python3 docs/studies/drying-cell.py run s Fa 1e4 delta 0.8 sphstress 0.2
+  python3 docs/studies/drying-cell.py cavity water-potential.restart
   python3 docs/studies/drying-cell.py table a b
 """
 import os
@@ -102,6 +104,24 @@ def contacts(restart="inflated.restart", delta=None):
                 nn_min=float(nn.min()))
 
 
+def cavity(restart):
+    """The largest fluid-free sphere inside the wall nodes' convex hull, 4 um clear of the nodes
+    (1 um grid), the share of that interior more than 8 um from any fluid particle, the nodes'
+    radii about their centre and the fluid's median nearest-neighbour distance."""
+    from scipy.spatial import cKDTree, Delaunay
+    _, typ, x = positions(restart)
+    wall, fluid = x[typ == 1], x[typ == 2]
+    c = wall.mean(axis=0)
+    g = np.mgrid[-40:40:1.0, -40:40:1.0, -40:40:1.0].reshape(3, -1).T + c
+    clear, _ = cKDTree(wall).query(g)
+    inside = (Delaunay(wall).find_simplex(g) >= 0) & (clear > 4.0)
+    d, _ = cKDTree(fluid).query(g[inside])
+    r = np.linalg.norm(wall - c, axis=1)
+    nn, _ = cKDTree(fluid).query(fluid, k=2)
+    return dict(empty_sphere=d.max(), far_share=(d > 8.0).mean(), r_min=r.min(), r_mean=r.mean(),
+                r_max=r.max(), nn_median=float(np.median(nn[:, 1])))
+
+
 def run(tag, extra):
     lmp(os.path.join(INPUTS, "in.water-potential"), f"log.{tag}", restart="inflated.restart",
         solute="yes", psiend=PSIEND, nlevels=NLEVELS, out=f"{tag}.csv", **extra)
@@ -168,6 +188,9 @@ if __name__ == "__main__":
         inflate()
     elif what == "ac":
         for k, v in contacts(*sys.argv[2:4]).items():
+            print(f"{k} {v:.6g}")
+    elif what == "cavity":
+        for k, v in cavity(sys.argv[2]).items():
             print(f"{k} {v:.6g}")
     elif what == "run":
         extra = dict(zip(sys.argv[3::2], sys.argv[4::2]))
