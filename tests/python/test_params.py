@@ -46,7 +46,7 @@ def test_table_first_definition_and_overrides_win(tmp_path):
 def test_level_table():
     """Level 4 is cell-model.lmp's defaults; a level coarser doubles r0 and reach, f0 grows 2^3."""
     t = params.table()
-    for k in ("s", "r0", "f0", "reach"):
+    for k in ("s", "r0", "f0", "reach", "delta", "dp"):
         assert params.LEVELS[4][k] == t[k], k
     for lv in (3, 4):
         fine, coarse = params.LEVELS[lv + 1], params.LEVELS[lv]
@@ -54,7 +54,7 @@ def test_level_table():
         assert coarse["f0"] == 8 * fine["f0"]
     assert [params.wall_nodes(lv) for lv in (3, 4, 5)] == [642, 2562, 10242]
     assert params.LEVELS[5]["s"] == 2.07 and params.LEVELS[5]["dt"] == 0.0005
-    assert params.model_vars(3) == dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001)
+    assert params.model_vars(3) == dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001, delta=0.2, dp=5.71)
     with pytest.raises(ValueError, match="level must be one of 3, 4, 5, got 7"):
         params.level(7)
 

@@ -38,10 +38,17 @@ SETTINGS = "settings.json"
 # s = 2.07 um (halving s to 1.6 would leave s/dx = 0.82, fewer kernel neighbours than at the
 # other levels; the formula 3.2 2^(4-level) gives 1.6 there and is not the table). Level 5 has a
 # wall node a quarter as heavy: its fastest tether mode (about 4 ns period) needs dt = 0.5 ns.
+# Three entries serve the drying cell's features, off by default (cell-model.lmp's Fa and
+# sphstress; docs/studies/drying-cell.md): delta, the range of the fluid's adhesion to its own wall
+# beyond r0, r0/16 (a wider well pulls the wall in above zero turgor: r0/4 costs 7% of the volume
+# at low turgor, r0/16 nothing); fa, the adhesion strength that holds the suction of a cell dried
+# to 2.5 Pi0 (Fa >= |P| A_c, margin 5, the contact area A_c ~ r0^2: a level finer, a quarter); dp,
+# the fluid's lattice spacing as cellgen.py places it (5.714, 3.010, 1.947 um), the artificial
+# stress's nearest-neighbour distance (docs/studies/pair_cell_sph-tension.rst).
 LEVELS = {
-    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001),
-    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001),
-    5: dict(nfluid=14000, s=2.07, r0=0.8, f0=1.25e3, reach=1.0, dt=0.0005),
+    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001, delta=0.2, dp=5.71, fa=2.0e4),
+    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001, delta=0.1, dp=3.01, fa=5.0e3),
+    5: dict(nfluid=14000, s=2.07, r0=0.8, f0=1.25e3, reach=1.0, dt=0.0005, delta=0.05, dp=1.95, fa=1.25e3),
 }
 # the resolutions the experiment and validation scripts name
 RES_LEVEL = {"coarse": 3, "paper": 4, "study": 4, "fine": 5}
@@ -198,7 +205,8 @@ def level(lvl):
 def model_vars(lvl):
     """The -var settings of cell-model.lmp that depend on the level."""
     p = level(lvl)
-    return dict(s=p["s"], r0=p["r0"], f0=p["f0"], reach=p["reach"], dt=p["dt"])
+    return dict(s=p["s"], r0=p["r0"], f0=p["f0"], reach=p["reach"], dt=p["dt"], delta=p["delta"],
+                dp=p["dp"])
 
 
 def main(argv=None):

@@ -158,7 +158,9 @@ def write_lengths(path, what, level, reach, special):
         row = params.LEVELS[level]
         lines.append("# from the level table (tools/cellmech/params.py LEVELS)")
         for k, note in (("s", "smoothing length, um"), ("r0", "fluid-wall contact distance, um"),
-                        ("f0", "fluid-wall 8-4 strength, nN um"), ("dt", "time step, us")):
+                        ("f0", "fluid-wall 8-4 strength, nN um"), ("dt", "time step, us"),
+                        ("delta", "adhesion range beyond r0, um (with -var Fa)"),
+                        ("dp", "fluid spacing, um (artificial stress, -var sphstress)")):
             lines.append(f"variable {k:8s} index {row[k]:<10g} # {note}")
         reach = max(reach, row["reach"])
     else:
