@@ -54,7 +54,7 @@ def test_level_table():
         assert coarse["f0"] == 8 * fine["f0"]
     assert [params.wall_nodes(lv) for lv in (3, 4, 5)] == [642, 2562, 10242]
     assert params.LEVELS[5]["s"] == 2.07 and params.LEVELS[5]["dt"] == 0.0005
-    assert params.model_vars(3) == dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001, delta=0.2, dp=5.71)
+    assert params.model_vars(3) == dict(s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001, delta=0.2, dp=4.57)
     with pytest.raises(ValueError, match="level must be one of 3, 4, 5, got 7"):
         params.level(7)
 

@@ -43,11 +43,16 @@ SETTINGS = "settings.json"
 # beyond r0, r0/16 (a wider well pulls the wall in above zero turgor: r0/4 costs 7% of the volume
 # at low turgor, r0/16 nothing); fa, the adhesion strength that holds the suction of a cell dried
 # to 2.5 Pi0 (Fa >= |P| A_c, margin 5, the contact area A_c ~ r0^2: a level finer, a quarter); dp,
-# the fluid's lattice spacing as cellgen.py places it (5.714, 3.010, 1.947 um), the artificial
-# stress's nearest-neighbour distance (docs/studies/pair_cell_sph-tension.rst).
+# the artificial stress's nearest-neighbour distance (docs/studies/pair_cell_sph-tension.rst): the
+# median nearest-neighbour distance of the inflated cell's fluid, measured (docs/studies/
+# drying-cell.py ac: 4.57 um at level 3, 3.05 at level 4), not cellgen's lattice spacing (5.714,
+# 3.010, 1.947 um): at level 3 the inflated fluid is packed closer than its lattice, and with
+# dp = 5.71 a turgid 2x2x2 block (Pi -100, strong lamella) blew up once its fluid went into
+# tension (mean pressure 98 -> 313 kPa, 179 tethers broken within 9 us), with 4.57 it did not.
+# Level 5's value is the lattice spacing, not measured.
 LEVELS = {
-    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001, delta=0.2, dp=5.71, fa=2.0e4),
-    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001, delta=0.1, dp=3.01, fa=5.0e3),
+    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001, delta=0.2, dp=4.57, fa=2.0e4),
+    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001, delta=0.1, dp=3.05, fa=5.0e3),
     5: dict(nfluid=14000, s=2.07, r0=0.8, f0=1.25e3, reach=1.0, dt=0.0005, delta=0.05, dp=1.95, fa=1.25e3),
 }
 # the resolutions the experiment and validation scripts name
