@@ -178,7 +178,8 @@ def test_continued_run_takes_restart_lengths(pair, default_inflation):
     compress = os.path.join(INPUTS, "in.tissue-compress")
     rc, log = lmp(compress, d, "log.2-compress", **short)
     sph = re.findall(r"^pair_coeff\s+2 2 cell/sph \S+ \S+ \S+ \S+ (\S+)$", log, re.M)
-    vir = re.findall(r"^pair_coeff\s+1 2 cell/virtual (\S+) (\S+) \S+$", log, re.M)
+    # the adhesion keyword follows when it is on (cell-model.lmp: adhargs, empty by default)
+    vir = re.findall(r"^pair_coeff\s+1 2 cell/virtual (\S+) (\S+) \S+(?: adhere \S+ \S+)?\s*$", log, re.M)
     T.check("2: in.tissue-compress continues with the restart's s, f0, r0 (RESTART.lmp)",
             rc == 0 and sph and vir and float(sph[-1]) == L3["s"] and
             tuple(map(float, vir[-1])) == (L3["f0"], L3["r0"]),
