@@ -194,7 +194,9 @@ void PairCellVirtual::hold_fluid(int a, int b, int c, int eflag)
     const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
     const double r0bk = r0[btype][ktype], dbk = delta[btype][ktype];
     if (rsq >= (r0bk + dbk) * (r0bk + dbk)) continue;
-    // within r0 no force, only the well's depth in the energy
+    // within r0 the well adds no force, only its depth to the energy: most contacts are there,
+    // and without an energy to tally there is nothing to do for them
+    if (!eflag && rsq <= r0bk * r0bk) continue;
     tally_contact(k, a, b, c, del, adhesion_fpair(fabk, r0bk, dbk, rsq),
                   eflag ? adhesion_energy(fabk, r0bk, dbk, rsq) : 0.0, eflag);
   }
