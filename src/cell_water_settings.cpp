@@ -4,7 +4,7 @@
 
      Pi value | Lp value | cell M Pi value Lp value | cells file
      | solute yes/no | exchange yes/no | external psi value
-     | external flux value | exposed outside D | exposed unglued
+     | external flux value | exposed outside D | exposed unglued | medium air
 ------------------------------------------------------------------------- */
 
 #include "cell_water_settings.h"
@@ -15,6 +15,7 @@
 #include "lammps.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -156,9 +157,10 @@ int WaterSettings::parse_one(int narg, char **arg)
   }
   if (key == "external") return parse_external(narg, arg);
   if (key == "exposed") return parse_exposed(narg, arg);
+  if (key == "medium") return parse_medium(narg, arg);
   lmp->error->all(FLERR,
                   "Unknown keyword '{}' for fix cell/fluid: expected Pi, Lp, cell, cells, solute, "
-                  "exchange, external or exposed",
+                  "exchange, external, exposed or medium",
                   key);
   return 0;
 }
@@ -260,6 +262,39 @@ int WaterSettings::parse_exposed(int narg, char **arg)
   expose_depth = D;
   depth_given = true;
   return 3;
+}
+
+// What the outside is. Air, or a solution whose solutes cannot enter the wall (a large osmoticum
+// such as PEG 6000): below zero turgor the protoplast stays on its wall and pulls it in
+// (cytorrhysis), which pair cell/virtual's adhesion models. A solution that enters the wall
+// (mannitol, sucrose, salts) fills the space the protoplast leaves (plasmolysis); the model has no
+// outside fluid to fill it, so such a run would show a protoplasm torn from its wall into vacuum.
+// The keyword exists so that a user who means a solution is told, not given that.
+int WaterSettings::parse_medium(int narg, char **arg)
+{
+  need(narg, 2, arg[0], "medium air");
+  if (strcmp(arg[1], "solution") == 0)
+    lmp->error->all(
+        FLERR,
+        "fix cell/fluid: medium solution is not modelled: a solution that enters the wall fills "
+        "the space the protoplast leaves (plasmolysis), and the package has no outside fluid to "
+        "fill it. 'medium air' is air or a solution that cannot enter the wall (PEG), in which "
+        "the protoplast holds on to its wall (cytorrhysis: pair_coeff ... cell/virtual ... "
+        "adhere)");
+  if (strcmp(arg[1], "air") != 0)
+    lmp->error->all(FLERR,
+                    "fix cell/fluid: keyword 'medium' expects 'air' (a solution that enters the "
+                    "wall, plasmolysis, is not modelled), got '{}'",
+                    arg[1]);
+  return 2;
+}
+
+double WaterSettings::highest_pi0() const
+{
+  double hi = Pi;
+  for (const auto &kv : percell)
+    if (kv.second.Pi) hi = std::max(hi, *kv.second.Pi);
+  return hi;
 }
 
 }    // namespace CellMech

@@ -40,6 +40,8 @@ class WaterSettings {
   bool active() const;
   bool external_flux() const { return external == EXT_FLUX && ext_value != 0.0; }
   bool exposed_outside() const { return exchange && expose == EXPOSE_OUTSIDE; }
+  // the least negative osmotic potential Pi0 of any cell (the first to lose its turgor)
+  double highest_pi0() const;
 
   double Pi = 0.0, Lp = 0.0;    // of every cell without a per-cell setting
   // a cell's own Pi and Lp (cell M, cells file); one left unset is the fix's
@@ -65,6 +67,7 @@ class WaterSettings {
   int parse_cells_file(const char *path);
   int parse_external(int narg, char **arg);
   int parse_exposed(int narg, char **arg);
+  int parse_medium(int narg, char **arg);
   void need(int narg, int n, const std::string &key, const char *form) const;
 };
 

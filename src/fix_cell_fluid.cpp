@@ -53,6 +53,7 @@
 #include "neighbor.h"
 #include "pair.h"
 #include "pair_cell_sph.h"
+#include "pair_cell_virtual.h"
 #include "physics/sph.h"
 #include "respa.h"
 #include "update.h"
@@ -145,6 +146,7 @@ void FixCellFluid::init()
 {
   CellMech::require_unit_consistency(lmp, "Fix cell/fluid");
   find_styles();
+  warn_unheld_protoplasm();
   check_respa();
   // exposed outside looks for other cells' walls up to its distance from a triangle
   if (settings.exposed_outside() && settings.active()) widen_ghost_cutoff();
@@ -184,6 +186,27 @@ void FixCellFluid::find_styles()
                "the walls) and d_alam (lamella area) of fix property/atom, as cellgen.py tissue "
                "writes them; missing: {}",
                id, iref < 0 ? (ialam < 0 ? "both" : "d2_cellref") : "d_alam");
+}
+
+// Below its osmotic potential a cell loses its turgor and dries on. Held by nothing, its SPH
+// protoplasm (no membrane, no cohesion) tears from the wall into vacuum and clumps: a picture of
+// neither air drying (the protoplast pulls its wall in, cytorrhysis) nor plasmolysis (not
+// modelled, keyword medium). Only a warning: runs that show what the adhesion changes need it off.
+void FixCellFluid::warn_unheld_protoplasm()
+{
+  if (warned_unheld || comm->me != 0) return;
+  if (settings.external != CellMech::WaterSettings::EXT_PSI || !settings.active()) return;
+  const double Pi0 = settings.highest_pi0();
+  if (settings.ext_value >= Pi0) return;
+  auto wall = dynamic_cast<PairCellVirtual *>(force->pair_match("^cell/virtual", 0));
+  if (wall && wall->adheres()) return;
+  warned_unheld = true;
+  error->warning(FLERR,
+                 "Fix cell/fluid {}: external psi {} is below the osmotic potential {} of a cell: "
+                 "it loses its turgor and dries on, and with no adhesion of its fluid to its wall "
+                 "(pair_coeff ... cell/virtual ... adhere Fa delta) the protoplasm leaves the wall "
+                 "into vacuum and clumps (docs/Howto_tissue.rst, drying)",
+                 id, settings.ext_value, Pi0);
 }
 
 void FixCellFluid::check_respa()

@@ -33,6 +33,8 @@ class PairCellVirtual : public PairCellLJ84 {
   double init_one(int, int) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
+  // some fluid type adheres to its own cell's wall (after init)
+  bool adheres() const { return adhering; }
 
  protected:
   double reach;    // bound on |barycentre - central node| of a triangle

@@ -269,7 +269,27 @@ BAD = [
     ("exchange maybe", "maybe"),
     ("solute", "needs 1 argument(s)"),
     ("colour red", "Unknown keyword 'colour'"),
+    ("medium solution", "medium solution is not modelled"),
+    ("medium water", "keyword 'medium' expects 'air'"),
 ]
+
+
+def test_unheld_protoplasm_warned(two):
+    """Below a cell's osmotic potential the protoplasm held by nothing leaves its wall: the fix
+    warns, once, unless the fluid adheres to its wall (pair_coeff ... cell/virtual ... adhere);
+    above it, or held, no warning; medium air is accepted."""
+    d, special = two
+    cases = [("external psi -3000 medium air", {}, True),
+             ("external psi -3000", dict(Fa=2e4, delta=0.2), False),
+             ("external psi -100", {}, False)]
+    for opts, extra, warned in cases:
+        rc, log = T.lmp(script(special, opts, 1, 1, "warn.dat", run="run 0\nrun 0\n"), cwd=d,
+                        check=False, log="log.warn", variables=dict(COARSE, dir=T.INPUTS, **extra))
+        warn = [ln for ln in log.splitlines() if "WARNING: Fix cell/fluid" in ln
+                and "below the osmotic potential" in ln]
+        print(f"'{opts}' {extra}: rc {rc}, {len(warn)} warning(s): {warn[0] if warn else ''}")
+        T.check(f"'{opts}' {extra}: runs, warned {warned} (once over two runs)",
+                rc == 0 and len(warn) == (1 if warned else 0))
 
 
 def test_bad_inputs_refused(two):

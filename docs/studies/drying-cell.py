@@ -5,11 +5,14 @@ in.inflate, then in.water-potential with the solutes kept from psi_ext = 0 to PS
   ac [RESTART [DELTA]]  the wall area per own-cell fluid-virtual contact within r0 + delta
            (A_c of Fa >= |P| A_c), the contact counts and the fluid's nearest-neighbour distance
   run TAG  in.water-potential with the extra -var NAME VALUE pairs that follow (TAG.csv)
+  rehydrate TAG  the same from the last state of a run (its save 1) back to pure water (TAG.csv)
   cavity RESTART  the fluid-free space inside the wall of a state (-var save 1 of a run)
+  section RESTART [PNG]  the wall's mid-plane section and the fluid near it: the folds' amplitude,
+           count and wavelength (and a picture)
   table TAG...  the levels of the runs against the reference (wall law + Young-Laplace above zero
            turgor, Boyle-van 't Hoff with a slack wall below)
 LEVEL=4 and WALL=bending in the environment change the resolution and the wall (the same for
-every step). Run it from an empty folder with the environment of tests/ (LMP, CELLMECH_PLUGIN,
+every step); PSIEND and NLEVELS the last external water potential and the number of levels. Run it from an empty folder with the environment of tests/ (LMP, CELLMECH_PLUGIN,
 PYTHONPATH=tools); the study's runs (a), (b) and one of the Fa-delta scan (the others alike):
   python3 docs/studies/drying-cell.py inflate
   python3 docs/studies/drying-cell.py ac inflated.restart 0.2
@@ -40,6 +43,9 @@ WALL = os.environ.get("WALL", "tether")               # WALL=bending: the plate 
 MODEL = dict(params.model_vars(LEVEL), wall=WALL)
 PI0 = -364.0
 PSIEND, NLEVELS = -910.0, 20          # 2.5 Pi0 in steps of Pi0 / 8
+# PSIEND=-1820 NLEVELS=40: to 5 Pi0, where Boyle-van 't Hoff leaves 20% of the water
+PSIEND = float(os.environ.get("PSIEND", PSIEND))
+NLEVELS = int(os.environ.get("NLEVELS", NLEVELS))
 NINFL = 25000
 T = params.table()
 B = T["rho0"] * T["c"] ** 2 / 7.0     # Tait stiffness, kPa
@@ -107,7 +113,8 @@ def contacts(restart="inflated.restart", delta=None):
 def cavity(restart):
     """The largest fluid-free sphere inside the wall nodes' convex hull, 4 um clear of the nodes
     (1 um grid), the share of that interior more than 8 um from any fluid particle, the nodes'
-    radii about their centre and the fluid's median nearest-neighbour distance."""
+    radii about their centre, the fluid's median nearest-neighbour distance and its mean number of
+    SPH neighbours (within 2s)."""
     from scipy.spatial import cKDTree, Delaunay
     _, typ, x = positions(restart)
     wall, fluid = x[typ == 1], x[typ == 2]
@@ -117,14 +124,68 @@ def cavity(restart):
     inside = (Delaunay(wall).find_simplex(g) >= 0) & (clear > 4.0)
     d, _ = cKDTree(fluid).query(g[inside])
     r = np.linalg.norm(wall - c, axis=1)
-    nn, _ = cKDTree(fluid).query(fluid, k=2)
+    tree = cKDTree(fluid)
+    nn, _ = tree.query(fluid, k=2)
+    # the SPH pairs each particle has: other fluid particles within the kernel's support 2s
+    pairs = np.array([len(n) - 1 for n in tree.query_ball_point(fluid, 2 * MODEL["s"])])
     return dict(empty_sphere=d.max(), far_share=(d > 8.0).mean(), r_min=r.min(), r_mean=r.mean(),
-                r_max=r.max(), nn_median=float(np.median(nn[:, 1])))
+                r_max=r.max(), nn_median=float(np.median(nn[:, 1])), neighbours=pairs.mean())
+
+
+def section(restart, png=None):
+    """The wall's mid-plane section (where the wall triangles cross z = the nodes' mean z) with the
+    fluid particles within r0 of that plane, and the section's radius r(phi) about its centre:
+    the folds' amplitude (standard deviation of r), their count round the section (the strongest
+    Fourier mode m >= 3 of r(phi)) and wavelength 2 pi <r> / m. png: draw it."""
+    ids, typ, x = positions(restart)
+    pos = dict(zip(ids, x))
+    p = np.array([[pos[i] for i in t] for t in triangles()])
+    c = x[typ == 1].mean(axis=0)
+    seg, lines = [], []
+    for t in p:
+        h = t[:, 2] - c[2]
+        cut = [t[a] + (t[b] - t[a]) * h[a] / (h[a] - h[b])
+               for a, b in ((0, 1), (1, 2), (2, 0)) if h[a] * h[b] < 0]
+        seg += cut
+        if len(cut) == 2:
+            lines.append([cut[0][:2] - c[:2], cut[1][:2] - c[:2]])
+    seg = np.array(seg)[:, :2] - c[:2]
+    phi, r = np.arctan2(seg[:, 1], seg[:, 0]), np.linalg.norm(seg, axis=1)
+    order = np.argsort(phi)
+    grid = np.linspace(-np.pi, np.pi, 512, endpoint=False)
+    rg = np.interp(grid, phi[order], r[order], period=2 * np.pi)
+    spec = np.abs(np.fft.rfft(rg - rg.mean()))
+    m = 3 + int(np.argmax(spec[3:64]))
+    fl = x[(typ == 2) & (np.abs(x[:, 2] - c[2]) < MODEL["r0"])] - c
+    if png:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from matplotlib.collections import LineCollection
+        fig, ax = plt.subplots(figsize=(4, 4))
+        ax.add_collection(LineCollection(lines, colors="k", linewidths=0.8))
+        ax.plot(fl[:, 0], fl[:, 1], "o", ms=2, color="tab:blue", label="fluid within r0 of z")
+        ax.set_aspect("equal")
+        ax.set_xlim(-34, 34)
+        ax.set_ylim(-34, 34)
+        ax.set_xlabel("x (um)")
+        ax.set_ylabel("y (um)")
+        ax.set_title(f"{os.path.basename(png)[:-4]}: level {LEVEL}, {WALL}", fontsize=9)
+        fig.tight_layout()
+        fig.savefig(png, dpi=120)
+    return dict(r_mean=r.mean(), r_std=rg.std(), mode=m, wavelength=2 * np.pi * rg.mean() / m,
+                fluid_in_slab=len(fl), fluid_r_max=np.linalg.norm(fl[:, :2], axis=1).max())
 
 
 def run(tag, extra):
     lmp(os.path.join(INPUTS, "in.water-potential"), f"log.{tag}", restart="inflated.restart",
         solute="yes", psiend=PSIEND, nlevels=NLEVELS, out=f"{tag}.csv", **extra)
+
+
+def rehydrate(tag, extra):
+    """From a run's last state (-var save 1) back to pure water: psi_ext from PSIEND to 0."""
+    lmp(os.path.join(INPUTS, "in.water-potential"), f"log.{tag}", restart="water-potential.restart",
+        solute="yes", psistart=PSIEND, psiend=0.0, nlevels=NLEVELS, out=f"{tag}.csv", **extra)
 
 
 def load(tag):
@@ -192,8 +253,11 @@ if __name__ == "__main__":
     elif what == "cavity":
         for k, v in cavity(sys.argv[2]).items():
             print(f"{k} {v:.6g}")
-    elif what == "run":
+    elif what == "section":
+        for k, v in section(*sys.argv[2:4]).items():
+            print(f"{k} {v:.6g}")
+    elif what in ("run", "rehydrate"):
         extra = dict(zip(sys.argv[3::2], sys.argv[4::2]))
-        run(sys.argv[2], extra)
+        (run if what == "run" else rehydrate)(sys.argv[2], extra)
     elif what == "table":
         table(sys.argv[2:])
