@@ -18,9 +18,14 @@
 #   5. water (fix cell/fluid solute/exchange/external): one inflated cell against external water
 #      potentials from 0 to Pi (in.water-potential); the glued pair with cell 2 at Pi -200 kPa
 #      (in.water-pair); a 2x2x2 block dried to 20% of its water through its exposed faces
-#      (in.tissue-dry), and a short leg at half the conductivity (the quasi-static check).
+#      (in.tissue-dry), and a short leg at half the conductivity (the quasi-static check); the same
+#      block with the membrane wall in tension-field theory and its fluid held on its walls
+#      (adhesion and artificial stress, params.LEVELS), dried at a quarter of the conductivity and,
+#      as its rate check, at four times that.
 #      ONLY="gen inflate-pair water-potential water-pair water-inflate water-dry water-dry-slow
-#      report-water" runs these alone (a few minutes); report-water writes only the report's
+#      water-inflate-hold water-dry-hold water-dry-hold-fast report-water" runs these alone (about
+#      ten minutes);
+#      report-water writes only the report's
 #      "Water" section into an existing tissue.md (and its key in the summary).
 #   RES=coarse bash tools/tissue.sh   # level-3 walls (642 nodes), 27-cell block (default; ~20 min on 2 cores)
 #   RES=small  bash tools/tissue.sh   # quick check: 8-cell block (2x2x2), shorter runs (a few minutes)
@@ -126,7 +131,10 @@ print(int(round(n / 4 / 100.0)) * 100)"
 # ONLY=report (or report-water) runs nothing: the run settings of the runs it reports stay as they are
 reports_only=1
 for s in ${ONLY:-run}; do case $s in report|report-water) ;; *) reports_only=0 ;; esac; done
-[ $reports_only = 1 ] && rm run-info.tmp || mv run-info.tmp run-info.txt
+# a run of some stages (ONLY) adds its lines to the record of the full run instead of replacing them
+if [ $reports_only = 1 ]; then rm run-info.tmp
+elif [ -n "${ONLY:-}" ] && [ -f run-info.txt ]; then sed "s/^# /# ONLY=\"$ONLY\": /" run-info.tmp >> run-info.txt; rm run-info.tmp
+else mv run-info.tmp run-info.txt; fi
 echo "RES=$RES: block $NB, output in $out, report in $report"
 
 # ---- inflations (Pi -364 and -100 kPa for the block; the pair and the single cell at -364)
@@ -194,14 +202,35 @@ waterdry() {  # LP TARGET VTK
     -var restart "$out/water-inflate/dry.restart" -var Lp "$1" -var target "$2" -var every 1000 \
     -var vtk "$3" -var nmax 200000
 }
+# the drying cell of docs/studies/drying-cell.md in a block: the wall that takes no compression
+# (membrane, wrinkle yes) and the fluid that holds it (the level's adhesion Fa, delta and the
+# artificial stress with its dp); inflated with the membrane wall from the same data. The first -var
+# of a name wins: hold comes before model's wall (WALL), whatever that is
+read -r FA3 DELTA3 DP3 < <(level_params 3 fa delta dp)
+hold=(-var wall membrane -var wrinkle yes -var Fa $FA3 -var delta $DELTA3 -var sphstress 0.2 -var dp $DP3)
+waterinflhold() {
+  read -r r k < "$out/water-inflate/reach-special.txt"
+  lmp -in "$INPUTS/in.tissue-inflate" -screen none "${hold[@]}" $(model "$r") \
+    -var data "$out/water-inflate/dry.data" -var special "$k" -var Pi -364 -var nsteps $NINFL \
+    -var every 500 -var restart_out dry.restart
+}
+waterdryhold() {  # LP TARGET VTK
+  read -r r k < "$out/water-inflate/reach-special.txt"
+  lmp -in "$INPUTS/in.tissue-dry" -screen none "${hold[@]}" $(model "$r") -var special "$k" \
+    -var Pi -364 -var restart "$out/water-inflate-hold/dry.restart" -var Lp "$1" -var target "$2" \
+    -var every 2000 -var vtk "$3" -var nmax 400000
+}
 bg water-potential waterpot
 bg water-pair waterpair
 stage water-inflate waterinfl
+stage water-inflate-hold waterinflhold
 bg water-dry waterdry 2.0e-4 0.2 6000
 bg water-dry-slow waterdry 1.0e-4 0.7 0
+bg water-dry-hold waterdryhold 5.0e-5 0.2 20000
+bg water-dry-hold-fast waterdryhold 2.0e-4 0.2 0   # its rate check: 4x the conductivity
 wait
 
-[ $reports_only = 1 ] || echo "# finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
+[ $reports_only = 1 ] || echo "# ${ONLY:+ONLY=\"$ONLY\": }finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt
 want report && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" --figs "$figs" \
   --converged "${converged[@]}"
 [ -n "${ONLY:-}" ] && want report-water && $py -m cellmech.tissue.report --run "$out" --res "$RES" --report "$report" \

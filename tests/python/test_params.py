@@ -117,6 +117,15 @@ def test_defaults_follow_includes_first_definition_wins(tmp_path):
     assert d["G"] == params.table()["G"]
 
 
+def test_first_var_of_a_name_wins_as_in_lammps():
+    """LAMMPS keeps the first -var of a name (an index variable is not redefined): tools/tissue.sh
+    gives the held drying's -var wall membrane before its model's -var wall tether, and the run has
+    the membrane wall; settings.json must record that one."""
+    inp, var = params.lammps_vars(["-in", "in.x", "-var", "wall", "membrane", "-var", "s", "6.4",
+                                   "-var", "wall", "tether"])
+    assert inp == "in.x" and var == {"wall": "membrane", "s": 6.4}
+
+
 def test_settings_json_holds_the_vars_passed_and_the_defaults(tmp_path):
     """settings.json, written before a run: every -var passed, and the defaults that applied; one
     entry per input; run_settings reads it back (and falls back to the defaults without it)."""

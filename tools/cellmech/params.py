@@ -125,7 +125,9 @@ def defaults(path, inputs=INPUTS):
 
 
 def lammps_vars(argv):
-    """(input file, {name: value}) of a LAMMPS command line's -in and -var NAME VALUE arguments."""
+    """(input file, {name: value}) of a LAMMPS command line's -in and -var NAME VALUE arguments.
+    A name given twice keeps its first value, as LAMMPS does (an index variable that exists is
+    not redefined)."""
     inp, var = None, {}
     k = 0
     while k < len(argv):
@@ -133,7 +135,7 @@ def lammps_vars(argv):
         if a in ("-in", "-i") and k + 1 < len(argv):
             inp, k = argv[k + 1], k + 2
         elif a in ("-var", "-v") and k + 2 < len(argv):
-            var[argv[k + 1]] = number(argv[k + 2])
+            var.setdefault(argv[k + 1], number(argv[k + 2]))
             k += 3
         else:
             k += 1

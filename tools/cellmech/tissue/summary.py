@@ -124,9 +124,16 @@ def water_words(rep):
     q = W.get("dry")
     if not q:
         return ""
-    return (f"In the water experiments a 2x2x2 block dried to {q['end_fraction']:.0%} of its water lost its turgor "
-            f"at {'-' if q['turgor_zero_at_fraction'] is None else format(q['turgor_zero_at_fraction'], '.0%')} "
-            "water and then stopped shrinking (no fluid-wall adhesion in the model).")
+    out = (f"In the water experiments a 2x2x2 block dried to {q['end_fraction']:.0%} of its water lost its turgor "
+           f"at {'-' if q['turgor_zero_at_fraction'] is None else format(q['turgor_zero_at_fraction'], '.0%')} "
+           "water and then stopped shrinking (its fluid not held on its walls, the inputs' default)")
+    h = W.get("dry_hold")
+    if not h:
+        return out + "."
+    worst = max(abs(v) for v in h["bvh_gap"].values())
+    return (out + f"; with its fluid held on walls that take no compression it shrank with its water, the enclosed "
+            f"volume within {100 * worst:.2g}% of Boyle-van 't Hoff's down to {h['end_fraction']:.0%} water"
+            + (" (where the run stopped on an error)" if h["stop"] else "") + " (coarse cells, not converged in resolution).")
 
 
 def stage_words(rep):
