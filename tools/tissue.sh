@@ -21,10 +21,10 @@
 #      (in.tissue-dry), and a short leg at half the conductivity (the quasi-static check); the same
 #      block with the membrane wall in tension-field theory and its fluid held on its walls
 #      (adhesion and artificial stress, params.LEVELS), dried at a quarter of the conductivity and,
-#      as its rate check, at four times that.
+#      as its rate check, at four times that, once more with the weak lamella.
 #      ONLY="gen inflate-pair water-potential water-pair water-inflate water-dry water-dry-slow
-#      water-inflate-hold water-dry-hold water-dry-hold-fast report-water" runs these alone (about
-#      ten minutes);
+#      water-inflate-hold water-dry-hold water-dry-hold-fast water-dry-hold-weak report-water" runs
+#      these alone (about ten minutes);
 #      report-water writes only the report's
 #      "Water" section into an existing tissue.md (and its key in the summary).
 #   RES=coarse bash tools/tissue.sh   # level-3 walls (642 nodes), 27-cell block (default; ~20 min on 2 cores)
@@ -214,9 +214,9 @@ waterinflhold() {
     -var data "$out/water-inflate/dry.data" -var special "$k" -var Pi -364 -var nsteps $NINFL \
     -var every 500 -var restart_out dry.restart
 }
-waterdryhold() {  # LP TARGET VTK
+waterdryhold() {  # LP TARGET VTK [-var NAME VALUE ...]
   read -r r k < "$out/water-inflate/reach-special.txt"
-  lmp -in "$INPUTS/in.tissue-dry" -screen none "${hold[@]}" $(model "$r") -var special "$k" \
+  lmp -in "$INPUTS/in.tissue-dry" -screen none "${hold[@]}" "${@:4}" $(model "$r") -var special "$k" \
     -var Pi -364 -var restart "$out/water-inflate-hold/dry.restart" -var Lp "$1" -var target "$2" \
     -var every 2000 -var vtk "$3" -var nmax 400000
 }
@@ -228,6 +228,8 @@ bg water-dry waterdry 2.0e-4 0.2 6000
 bg water-dry-slow waterdry 1.0e-4 0.7 0
 bg water-dry-hold waterdryhold 5.0e-5 0.2 20000
 bg water-dry-hold-fast waterdryhold 2.0e-4 0.2 0   # its rate check: 4x the conductivity
+# does the lamella hold the cells against their fluid? the same, weak from the drying's start
+bg water-dry-hold-weak waterdryhold 2.0e-4 0.2 0 -var sigl ${SIGL[weak]} -var Gl ${GL[weak]}
 wait
 
 [ $reports_only = 1 ] || echo "# ${ONLY:+ONLY=\"$ONLY\": }finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt

@@ -71,5 +71,8 @@ def test_a_note_under_the_title_stays_with_its_runs(tmp_path):
     (tmp_path / "tissue.md").write_text("# Tissue experiments (coarse)\n\n> a note\n> on two lines\n\nGenerated ...\n")
     (tmp_path / "tissue-summary.json").write_text(json.dumps({"run_info": ["# RES=coarse", "# started 1"]}))
     assert rep.kept_note() == ["> a note", "> on two lines", ""]
+    # the same run with some stages run again (tools/tissue.sh ONLY= adds lines): still its note
+    rep.info = "# RES=coarse\n# started 1\n# ONLY=\"water-dry\": started 3\n"
+    assert rep.kept_note() == ["> a note", "> on two lines", ""]
     rep.info = "# RES=coarse\n# started 2\n"            # a new run: the note is not about it
     assert rep.kept_note() == []

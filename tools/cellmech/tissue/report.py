@@ -201,10 +201,12 @@ class Report:
     def kept_note(self):
         """The note written by hand under the title of the report being replaced (its "> " lines and
         the blank line after them), kept when that report is of this same run (its summary's
-        run_info is this run's): it is about these runs. A new run's report starts without it."""
+        run_info begins this run's: a run of some stages, ONLY, adds lines): it is about these runs.
+        A new run's report starts without it."""
         path = os.path.join(self.report, "tissue.md")
-        old = reporting.read_json(os.path.join(self.report, "tissue-summary.json"), {})
-        if not os.path.exists(path) or old.get("run_info") != self.info.strip().splitlines():
+        old = reporting.read_json(os.path.join(self.report, "tissue-summary.json"), {}).get("run_info")
+        now = self.info.strip().splitlines()
+        if not os.path.exists(path) or not old or old != now[:len(old)]:
             return []
         lines = reporting.read_text(path).split("\n")[2:]
         n = next((k for k, ln in enumerate(lines) if not ln.startswith("> ")), 0)

@@ -467,6 +467,7 @@ def dry_hold(rep, S):
     q["bvh_gap"] = {str(f): float(np.interp(f, x[::-1], gap[::-1])) for f in (0.9, 0.8, 0.7, 0.6, 0.4, 0.2)
                     if f >= x[-1] - 1e-3}
     q["rate"] = hold_rate_check(rep, d, name + "-fast")
+    q["weak"] = hold_weak_check(rep, name + "-fast", name + "-weak")
     S["dry_hold"] = q
     dry_hold_text(rep, q, d, pic, name, S.get("dry", {}))
 
@@ -485,6 +486,35 @@ def hold_rate_check(rep, d, fast):
             for w in (0.95, 0.9, 0.85, 0.8, 0.75, 0.7) if w >= end}
     return dict(Lp=e["Lp"], end_fraction=float(f_["water_fraction"][-1]), stop=stop_reason(rep.p(f"{fast}/log.lammps")),
                 rows=rows)
+
+
+def hold_weak_check(rep, fast, weak):
+    """The held drying with the weak lamella (stage WEAK) against the same with the strong one
+    (FAST, the same conductivity) at equal water: mean turgor; the lamella bonds let go."""
+    if not (os.path.exists(rep.p(f"{fast}/tissue-dry.csv")) and os.path.exists(rep.p(f"{weak}/tissue-dry.csv"))):
+        return None
+    f_, w_ = read_csv(rep.p(f"{fast}/tissue-dry.csv")), read_csv(rep.p(f"{weak}/tissue-dry.csv"))
+    e = params.run_settings(rep.p(weak), "in.tissue-dry")
+    end = max(float(f_["water_fraction"][-1]), float(w_["water_fraction"][-1])) - 1e-3
+    rows = {str(w): (at(f_, w, "turgor_mean_kPa"), at(w_, w, "turgor_mean_kPa"))
+            for w in (0.9, 0.8, 0.7) if w >= end}
+    diff = max(abs(a - b) for a, b in rows.values())
+    big = max(abs(a) for a, _ in rows.values())
+    return dict(sigl=e["sigl"], Gl=e["Gl"], Lp=e["Lp"], end_fraction=float(w_["water_fraction"][-1]),
+                debonded=int(w_["debonded"][-1]), rows=rows, diff_kPa=diff, same=diff < 0.1 * big,
+                stop=stop_reason(rep.p(f"{weak}/log.lammps")))
+
+
+def hold_weak_text(w):
+    if w is None:
+        return "The check with the weak lamella (stage water-dry-hold-weak) has not run."
+    at_ = ", ".join(f"{float(k):.0%}: {a:.4g} and {b:.4g} kPa" for k, (a, b) in w["rows"].items())
+    return (f"With the weak lamella from the drying's start (sigl {w['sigl']:g} kPa, Gl {w['Gl']:g}, Lp {w['Lp']:g}; "
+            f"stage water-dry-hold-weak) {w['debonded']} lamella bonds let go by {w['end_fraction']:.0%} water"
+            + (" (where it stopped on an error)" if w["stop"] else "") + f", and the fluid reads "
+            + ("the same tension" if w["same"] else "another tension") + f" at equal water (strong, weak: {at_}): "
+            + ("the lamella is not what holds the cells against their fluid." if w["same"] else
+               "the lamella holds part of it."))
 
 
 def dry_hold_text(rep, q, d, pic, name, plain):
@@ -522,7 +552,8 @@ def dry_hold_text(rep, q, d, pic, name, plain):
           f"{plain.get('size_at', {}).get('0.8', float('nan')):.4f} in section 3); the outer walls crumple (pictures). "
           "Unlike the single cell of the study, which follows at zero pressure, the block's fluid reads a growing "
           f"tension (mean turgor down to {q['turgor_min_kPa']:.4g} kPa), although its walls are compressed (they carry "
-          "nothing in tension-field theory): what holds the cells against it is not identified. From 80% water on the "
+          "nothing in tension-field theory). " + hold_weak_text(q.get("weak")) + " What holds them is not identified. "
+          "From 80% water on the "
           "enclosed volume falls below the water's volume at rest density while the fluid reads tension: the SPH "
           "density and the space the fluid fills disagree by a few %. A wall triangle shrinks in its plane without "
           "limit where a real wall would fold out of it, which ends the run where a triangle is crushed. "
