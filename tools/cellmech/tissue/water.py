@@ -520,6 +520,7 @@ def hold_weak_text(w):
 def dry_hold_text(rep, q, d, pic, name, plain):
     """The held drying's text; plain: section 3's numbers (the block not held)."""
     e = q["settings"]
+    lp3 = params.run_settings(rep.p("water-dry"), "in.tissue-dry")["Lp"]
     stop = (f" The run stopped there: `{q['stop']}`" if q["stop"] else "")
     x = d["water_fraction"]
     rows = []
@@ -537,7 +538,7 @@ def dry_hold_text(rep, q, d, pic, name, plain):
           "nothing, the slack wall of docs/studies/drying-cell.md) and each cell's fluid held on its own wall: "
           f"`-var Fa {e['Fa']} -var delta {e['delta']}` (the adhesion, pair_coeff ... cell/virtual ... adhere) and "
           f"`-var sphstress {e['sphstress']} -var dp {e['dp']}` (the artificial stress), the level-3 values of "
-          f"params.LEVELS; Lp {e['Lp']} (a quarter of section 3's), air at {e['psi']} kPa. Water "
+          f"params.LEVELS; Lp {e['Lp']} ({e['Lp'] / lp3:.3g} times section 3's), air at {e['psi']} kPa. Water "
           f"{q['water0_pg']:.4g} pg down to {q['end_fraction']:.1%} in {q['time_us']:.3g} us.{stop}", "",
           "| water | enclosed volume | vs Boyle-van 't Hoff | wall area | block size | mean turgor (kPa) | sphericity |",
           "|---|---|---|---|---|---|---|", *rows, "",
@@ -557,8 +558,8 @@ def dry_hold_text(rep, q, d, pic, name, plain):
           "either conductivity, where dried in settled levels it reads zero pressure (docs/studies/drying-cell.md, "
           "\"Continuous drying\"); why is open. From 80% water on the enclosed volume falls below Boyle-van 't Hoff's: "
           "the fluid's particle volumes (m/rho) reach past the enclosed volume by a share that grows as the cells "
-          "shrink (in that single cell 5.9% turgid, 8.7% at 62% water), so the enclosed volume tells the fluid's to "
-          "a few % only. A wall triangle shrinks in its plane without "
+          "shrink (measured on that single cell in the study), so the enclosed volume tells the fluid's to a few % "
+          "only. A wall triangle shrinks in its plane without "
           "limit where a real wall would fold out of it, which ends the run where a triangle is crushed. "
           "Coarse cells only: at level 4 the drying cell's protoplasm tears inside (docs/studies/drying-cell.md), so "
           f"this is not a converged result. Broken walls {q['broken']}, debonded lamella bonds {q['debonded']}.", "",
