@@ -177,15 +177,13 @@ def section(restart, png=None):
                 fluid_in_slab=len(fl), fluid_r_max=np.linalg.norm(fl[:, :2], axis=1).max())
 
 
-def run(tag, extra):
-    lmp(os.path.join(INPUTS, "in.water-potential"), f"log.{tag}", restart="inflated.restart",
-        solute="yes", psiend=PSIEND, nlevels=NLEVELS, out=f"{tag}.csv", **extra)
-
-
-def rehydrate(tag, extra):
-    """From a run's last state (-var save 1) back to pure water: psi_ext from PSIEND to 0."""
-    lmp(os.path.join(INPUTS, "in.water-potential"), f"log.{tag}", restart="water-potential.restart",
-        solute="yes", psistart=PSIEND, psiend=0.0, nlevels=NLEVELS, out=f"{tag}.csv", **extra)
+def run(tag, extra, back=False):
+    """in.water-potential from psi_ext = 0 to PSIEND on the inflated cell, or (back) from a run's
+    last state (-var save 1) from PSIEND back to pure water."""
+    ends = dict(restart="water-potential.restart", psistart=PSIEND, psiend=0.0) if back else \
+        dict(restart="inflated.restart", psiend=PSIEND)
+    lmp(os.path.join(INPUTS, "in.water-potential"), f"log.{tag}", solute="yes", nlevels=NLEVELS,
+        out=f"{tag}.csv", **ends, **extra)
 
 
 def load(tag):
@@ -258,6 +256,6 @@ if __name__ == "__main__":
             print(f"{k} {v:.6g}")
     elif what in ("run", "rehydrate"):
         extra = dict(zip(sys.argv[3::2], sys.argv[4::2]))
-        (run if what == "run" else rehydrate)(sys.argv[2], extra)
+        run(sys.argv[2], extra, back=what == "rehydrate")
     elif what == "table":
         table(sys.argv[2:])

@@ -246,12 +246,17 @@ def fluid_text(S):
             "each other, which SPH does not prevent under tension.")
 
 
+def spread(rows):
+    """(largest volume difference, largest turgor difference) of the rows of rate_rows."""
+    return (max(abs(v["volume_fast"] - v["volume_slow"]) for v in rows.values()),
+            max(abs(v["turgor_fast"] - v["turgor_slow"]) for v in rows.values()))
+
+
 def lp_text(q):
     c = q.get("lp_check")
     if not c:
         return "(not run)"
-    dv = max(abs(v["volume_fast"] - v["volume_slow"]) for v in c.values())
-    dp = max(abs(v["turgor_fast"] - v["turgor_slow"]) for v in c.values())
+    dv, dp = spread(c)
     q["lp_check_max_volume_diff"], q["lp_check_max_turgor_diff_kPa"] = dv, dp
     return (f"gives the same enclosed volume to {100 * dv:.2g}% of full turgor's and the same mean pressure to "
             f"{dp:.2g} kPa at equal water content; the pressure, in the fluid's tension below zero turgor, is "
@@ -346,13 +351,18 @@ def dry_measure(d, slow):
         elongation=[float(d["elongation"][0]), float(np.nanmax(d["elongation"])), float(d["elongation"][-1])],
         broken=int(d["broken"][-1]), debonded=int(d["debonded"][-1]))
     if slow is not None:
-        end = max(float(slow["water_fraction"][-1]), float(x[-1])) - 1e-3
-        fs = [f for f in (0.95, 0.9, 0.85, 0.8, 0.75, 0.7) if f >= end]
-        q["lp_check"] = {str(round(f, 3)): dict(turgor_fast=at(d, f, "turgor_mean_kPa"),
-                                                 turgor_slow=at(slow, f, "turgor_mean_kPa"),
-                                                 volume_fast=at(d, f, "volume_um3") / V0,
-                                                 volume_slow=at(slow, f, "volume_um3") / V0) for f in fs}
+        q["lp_check"] = rate_rows(d, slow)
     return q
+
+
+def rate_rows(fast, slow):
+    """Two runs of one drying at two conductivities, at the water contents both reach (95% to 70%):
+    mean turgor and enclosed volume (/ the faster run's first) of each."""
+    end = max(float(slow["water_fraction"][-1]), float(fast["water_fraction"][-1])) - 1e-3
+    V0 = fast["volume_um3"][0]
+    return {str(round(f, 3)): dict(turgor_fast=at(fast, f, "turgor_mean_kPa"), turgor_slow=at(slow, f, "turgor_mean_kPa"),
+                                   volume_fast=at(fast, f, "volume_um3") / V0, volume_slow=at(slow, f, "volume_um3") / V0)
+            for f in (0.95, 0.9, 0.85, 0.8, 0.75, 0.7) if f >= end}
 
 
 def dry(rep, S):
@@ -479,13 +489,8 @@ def hold_rate_check(rep, d, fast):
         return None
     f_ = read_csv(rep.p(f"{fast}/tissue-dry.csv"))
     e = params.run_settings(rep.p(fast), "in.tissue-dry")
-    end = max(float(f_["water_fraction"][-1]), float(d["water_fraction"][-1])) - 1e-3
-    rows = {str(w): dict(turgor_slow=at(d, w, "turgor_mean_kPa"), turgor_fast=at(f_, w, "turgor_mean_kPa"),
-                         volume_slow=at(d, w, "volume_um3") / d["volume_um3"][0],
-                         volume_fast=at(f_, w, "volume_um3") / f_["volume_um3"][0])
-            for w in (0.95, 0.9, 0.85, 0.8, 0.75, 0.7) if w >= end}
     return dict(Lp=e["Lp"], end_fraction=float(f_["water_fraction"][-1]), stop=stop_reason(rep.p(f"{fast}/log.lammps")),
-                rows=rows)
+                rows=rate_rows(f_, d))
 
 
 def hold_weak_check(rep, fast, weak):
@@ -570,8 +575,7 @@ def hold_rate_text(r, e):
     """The rate check's sentence and table (lines for rep.w)."""
     if r is None:
         return ["*Rate.* The check at 4x the conductivity (stage water-dry-hold-fast) has not run.", ""]
-    dp = max(abs(v["turgor_fast"] - v["turgor_slow"]) for v in r["rows"].values())
-    dv = max(abs(v["volume_fast"] - v["volume_slow"]) for v in r["rows"].values())
+    dv, dp = spread(r["rows"])
     stop = " (stopped by an error)" if r["stop"] else ""
     big = max(abs(v["turgor_slow"]) for v in r["rows"].values())
     # a tenth of the tension: the levels' scatter and the drag's share are below it
