@@ -18,6 +18,8 @@
    total of the inviscid equations.
    pair_style cell/sph stress adds Monaghan's artificial stress (not the paper's) to the pressure
    term where a particle is in tension (physics/sph.h; its pair energy joins the energy).
+   pair_style cell/sph cohesion gives the fluid of a cell a surface tension (Eqs. C1-C2, not the
+   paper's), so that a void inside it costs energy and a drying protoplasm stays one body.
 ------------------------------------------------------------------------- */
 
 #include "pair_cell_sph.h"
@@ -55,7 +57,7 @@ PairCellSPH::PairCellSPH(LAMMPS *_lmp) :
     Pair(_lmp), fluid(nullptr), rho0(nullptr), c(nullptr), P0(nullptr), mu(nullptr), kappa(nullptr),
     s(nullptr), sinv(nullptr), wrnorm(nullptr), irho(-1), idrho(-1), stress_eps(0.0),
     stress_dp(0.0), stress_n(0), tension(false), wdp(nullptr), fnorm(nullptr), stress_r(nullptr),
-    nmax(0), quant(nullptr), pairs(new CellMech::SPHPairs(_lmp))
+    coh_gamma(0.0), coh_a(nullptr), nmax(0), quant(nullptr), pairs(new CellMech::SPHPairs(_lmp))
 {
   comm_forward = 2;
   comm_reverse = 1;
@@ -82,6 +84,7 @@ PairCellSPH::~PairCellSPH()
     memory->destroy(wrnorm);
     memory->destroy(wdp);
     memory->destroy(fnorm);
+    memory->destroy(coh_a);
   }
 }
 
@@ -99,10 +102,11 @@ void PairCellSPH::compute(int eflag, int vflag)
   pairs->find_for_forces(list, type_data());
 
   // the artificial stress only where a local or ghost particle is in tension (fluid_quantities)
-  if (stress_eps > 0.0 && tension)
-    forces<true>();
+  const bool stress = stress_eps > 0.0 && tension;
+  if (coh_gamma > 0.0)
+    stress ? forces<true, true>() : forces<false, true>();
   else
-    forces<false>();
+    stress ? forces<true, false>() : forces<false, false>();
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -113,7 +117,7 @@ void PairCellSPH::compute(int eflag, int vflag)
    the option existed, so that runs without it keep their bits.
 ------------------------------------------------------------------------- */
 
-template <bool STRESS> void PairCellSPH::forces()
+template <bool STRESS, bool COHESION> void PairCellSPH::forces()
 {
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
@@ -138,6 +142,9 @@ template <bool STRESS> void PairCellSPH::forces()
     const double *const wdpi = STRESS ? wdp[type[i]] : nullptr;
     const double *const fnormi = STRESS ? fnorm[type[i]] : nullptr;
     const double ri = STRESS ? stress_r[i] : 0.0;
+    const double *const si = COHESION ? s[type[i]] : nullptr;
+    const double *const cohai = COHESION ? coh_a[type[i]] : nullptr;
+    const double voli = mi * irhoi;
     // as drho[i] in SPHPairs::find_pairs: the same additions in the same order, in registers
     double fxi = ff[3 * i], fyi = ff[3 * i + 1], fzi = ff[3 * i + 2];
     for (int k = pair_first[ii]; k < kend; k++) {
@@ -165,6 +172,14 @@ template <bool STRESS> void PairCellSPH::forces()
         fp += sph_stress_fpair(mi, mj, ri, stress_r[j], fn, wr);
         if (eflag_either)
           evdwl = sph_stress_energy(mi, mj, ri, stress_r[j], fn * f, wdpi[jt], stress_n);
+      }
+      // the cohesion of the cell's fluid (Eq. C1)
+      if (COHESION) {
+        const int jt = type[j];
+        const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
+        const double volj = mj * qj[2];
+        fp += cohesion_fpair(cohai[jt], voli, volj, r, 2.0 * si[jt]);
+        if (eflag_either) evdwl += cohesion_energy(cohai[jt], voli, volj, r, 2.0 * si[jt]);
       }
       const double fv = sph_viscous_fvel(mi, mj, mui, qj[3], irhoi, qj[2], wr);
       const double fx = fp * delx + fv * dvx;
@@ -266,6 +281,7 @@ void PairCellSPH::allocate()
   memory->create(wrnorm, np1, np1, "pair:wrnorm");
   memory->create(wdp, np1, np1, "pair:wdp");
   memory->create(fnorm, np1, np1, "pair:fnorm");
+  memory->create(coh_a, np1, np1, "pair:coh_a");
   memory->create(fluid, np1, "pair:fluid");
   memory->create(rho0, np1, "pair:rho0");
   memory->create(c, np1, "pair:c");
@@ -330,6 +346,7 @@ double PairCellSPH::init_one(int i, int j)
     wdp[i][j] = wdp[j][i] = kernel_w(stress_dp, s[i][j]);
     fnorm[i][j] = fnorm[j][i] = kernel_w_norm(s[i][j]) / wdp[i][j];
   }
+  coh_a[i][j] = coh_a[j][i] = cohesion_amplitude(coh_gamma, 2.0 * s[i][j]);
   return 2.0 * s[i][j];
 }
 
@@ -381,14 +398,21 @@ double PairCellSPH::single(int i, int j, int itype, int jtype, double rsq, doubl
   const double mi = atom->rmass[i], mj = atom->rmass[j];
   const double Pi = pressure(itype, rho[i]), Pj = pressure(jtype, rho[j]);
   fforce = sph_pressure_fpair(mi, mj, Pi / (rho[i] * rho[i]), Pj / (rho[j] * rho[j]), wr);
-  if (stress_eps <= 0.0) return 0.0;
+  double energy = 0.0;
+  if (coh_gamma > 0.0) {
+    const double r = std::sqrt(rsq), rc = 2.0 * s[itype][jtype];
+    const double vi = mi / rho[i], vj = mj / rho[j];
+    fforce += cohesion_fpair(coh_a[itype][jtype], vi, vj, r, rc);
+    energy = cohesion_energy(coh_a[itype][jtype], vi, vj, r, rc);
+  }
+  if (stress_eps <= 0.0) return energy;
   // the artificial stress and its pair energy
   const double ri = sph_stress_r(Pi, 1.0 / rho[i], stress_eps);
   const double rj = sph_stress_r(Pj, 1.0 / rho[j], stress_eps);
   const double f = kernel_w_q(std::sqrt(rsq) * sinv[itype][jtype], fnorm[itype][jtype]);
   const double fn = sph_stress_fn(f, stress_n);
   fforce += sph_stress_fpair(mi, mj, ri, rj, fn, wr);
-  return sph_stress_energy(mi, mj, ri, rj, fn * f, wdp[itype][jtype], stress_n);
+  return energy + sph_stress_energy(mi, mj, ri, rj, fn * f, wdp[itype][jtype], stress_n);
 }
 
 void *PairCellSPH::extract(const char *str, int &dim)

@@ -84,6 +84,10 @@ class PairCellSPH : public Pair {
   bool tension;    // some local or ghost particle has R > 0 (this step)
   double **wdp, **fnorm;
   double *stress_r;
+  // the cohesion (pair_style cell/sph cohesion gamma; 0: off, the default): its surface tension
+  // and per type pair the amplitude A of Eq. C2 at r_c = 2s (init_one)
+  double coh_gamma;
+  double **coh_a;
   int nmax;
   // per local and ghost atom, once per step: P / rho^2, m, 1 / rho, mu
   static constexpr int NQUANT = 4;
@@ -95,8 +99,8 @@ class PairCellSPH : public Pair {
   void allocate();
   CellMech::SPHTypeData type_data() const;
   void fluid_quantities(int eflag);
-  // Eq. 5 over the pairs; with STRESS, the artificial stress as well
-  template <bool STRESS> void forces();
+  // Eq. 5 over the pairs; with STRESS, the artificial stress as well; with COHESION, Eq. C1
+  template <bool STRESS, bool COHESION> void forces();
   void stress_settings(int narg, char **arg);
 };
 

@@ -27,10 +27,11 @@ using namespace LAMMPS_NS;
 using namespace CellPhysics;
 
 /* ----------------------------------------------------------------------
-   pair_style cell/sph [search auto|branch|branchless] [stress eps n dp]
+   pair_style cell/sph [search auto|branch|branchless] [stress eps n dp] [cohesion gamma]
    search: the kind of the distance test of the pair search (cell_sph_pairs.h; auto, the default:
    the faster one, measured as the run goes). Every kind gives the same bits, so the choice is for
    tests and timing. stress: Monaghan's artificial stress (physics/sph.h), off by default.
+   cohesion: the protoplasm's surface tension gamma (Eqs. C1-C2, physics/sph.h), off by default.
    A pair_style command given again starts from the defaults.
 ------------------------------------------------------------------------- */
 
@@ -39,6 +40,7 @@ void PairCellSPH::settings(int narg, char **arg)
   pairs->set_search(CellMech::SPHPairs::AUTO);
   stress_eps = stress_dp = 0.0;
   stress_n = 0;
+  coh_gamma = 0.0;
   int iarg = 0;
   while (iarg < narg) {
     const std::string key = arg[iarg];
@@ -58,10 +60,16 @@ void PairCellSPH::settings(int narg, char **arg)
                    narg - iarg - 1);
       stress_settings(3, arg + iarg + 1);
       iarg += 4;
+    } else if (key == "cohesion") {
+      if (iarg + 2 > narg)
+        error->all(FLERR, "Illegal pair_style cell/sph command: 'cohesion' needs gamma");
+      coh_gamma = CellMech::coefficient(lmp, "pair_style cell/sph cohesion", "surface tension gamma",
+                                        arg[iarg + 1], CellMech::Sign::POSITIVE);
+      iarg += 2;
     } else
       error->all(FLERR,
-                 "Illegal pair_style cell/sph command: expected keyword 'search' or 'stress', "
-                 "got '{}'",
+                 "Illegal pair_style cell/sph command: expected keyword 'search', 'stress' or "
+                 "'cohesion', got '{}'",
                  key);
   }
 }

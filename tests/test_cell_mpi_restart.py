@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Issue 3, check 7: a fluid-filled cell (SPH, virtual particles, osmosis, tethers, contacts) gives
 the same forces on 1 and 2 MPI ranks at step 0 (round-off of the summation order: 1e-12 of the
-largest force), and a run continued from write_restart / read_restart matches the uninterrupted
+largest force), also with what a drying cell adds (the adhesion, the artificial stress and the
+fluid's cohesion, at the level table's settings), and a run continued from write_restart / read_restart matches the uninterrupted
 run. The continued run rebuilds its neighbour lists at the same step as the uninterrupted one
 (split into two `run` commands), so positions, densities and masses agree to round-off; with the
 paper's tethers and with the membrane wall with bending (-var wall bending).
@@ -10,6 +11,7 @@ import numpy as np
 import pytest
 
 import lmptest as T
+from cellmech import params
 
 COARSE = dict(T.COARSE)
 START = """
@@ -35,13 +37,18 @@ def cells(rundir):
     return rundir
 
 
-def test_step0_forces_rank_independent(cells):
+LEVEL3 = params.LEVELS[3]
+DRYING = dict(Fa=LEVEL3["fa"], delta=LEVEL3["delta"], sphstress=0.2, dp=LEVEL3["dp"], sphcoh=LEVEL3["coh"])
+
+
+@pytest.mark.parametrize("kind, extra", (("plain", {}), ("drying", DRYING)))
+def test_step0_forces_rank_independent(cells, kind, extra):
     d = cells
     step0 = {}
     for n in (1, 2):
-        T.lmp(START.format(inputs=T.INPUTS) + "run 0\n" + DUMP.format(name=f"f0-{n}.dump"), cwd=d,
-              nprocs=n, variables=COMMON, log=f"log.step0-{n}")
-        step0[n] = table(f"{d}/f0-{n}.dump")
+        T.lmp(START.format(inputs=T.INPUTS) + "run 0\n" + DUMP.format(name=f"f0-{kind}-{n}.dump"), cwd=d,
+              nprocs=n, variables=dict(COMMON, **extra), log=f"log.step0-{kind}-{n}")
+        step0[n] = table(f"{d}/f0-{kind}-{n}.dump")
     f1, f2 = step0[1][:, 7:10], step0[2][:, 7:10]
     err = np.abs(f1 - f2).max() / np.abs(f1).max()
     print(f"step 0: {len(f1)} atoms, max |f| {np.abs(f1).max():.4g} nN, 1 vs 2 ranks max diff {err:.2e}")

@@ -6,12 +6,16 @@
    topic in src/physics/, checked by tests/unit/physics/test_sph.cpp.
    Equation numbers refer to that paper; docs/model.md describes the model.
    This header: the SPH pair force (Eq. 5), the continuity equation (Eq. 7), the density update
-   of a particle whose mass changes (Eqs. 8-9), and Monaghan's artificial stress (not the paper's:
-   the remedy of the tensile instability, pair_style cell/sph stress).
+   of a particle whose mass changes (Eqs. 8-9), Monaghan's artificial stress (not the paper's:
+   the remedy of the tensile instability, pair_style cell/sph stress) and the cohesion of the
+   protoplasm (not the paper's: a surface tension that keeps a cell's fluid one body, pair_style
+   cell/sph cohesion).
 ------------------------------------------------------------------------- */
 
 #ifndef CELLMECH_PHYSICS_SPH_H
 #define CELLMECH_PHYSICS_SPH_H
+
+#include <cmath>
 
 namespace CellPhysics {
 
@@ -87,6 +91,44 @@ inline double sph_stress_energy(double mi, double mj, double ri, double rj, doub
                                 int n)
 {
   return mi * mj * (ri + rj) * wdp * fn1 / (n + 1);
+}
+
+// Cohesion of the protoplasm (Eqs. C1-C2; pair_style cell/sph cohesion gamma), not in the paper.
+// A fluid in tension relieves it by clumping, since in SPH a void inside the fluid costs nothing;
+// in a liquid it costs its surface tension gamma per area. A pair force between particles of the
+// same cell, with the particles' volumes V = m / rho,
+//   dU/dr = A V_i V_j (r - a) (r_c - r)^2   for r < r_c = 2s, 0 beyond,          (Eq. C1)
+// is repulsive inside a = 4 r_c / 7 and attractive beyond. a is the root of int r^3 U' dr = 0: in
+// a uniform fluid (pair distribution 1) the law adds nothing to the pressure, so it does not move
+// the turgor or the equation of state. Its surface tension (Kirkwood-Buff, gamma = (pi/8) n^2
+// int r^4 U' dr with n V = 1) is gamma = pi A r_c^8 / 15680, so
+//   A = 15680 gamma / (pi r_c^8).                                                 (Eq. C2)
+// The V_i V_j makes gamma independent of the particles' size, so that it stays the same as a
+// drying cell's particles lose mass.
+constexpr double COHESION_ROOT = 4.0 / 7.0;    // a / r_c
+constexpr double COHESION_KB = 15680.0;    // 8 x 1960, 1 / 1960 = int_0^1 x^4 (x - 4/7)(1 - x)^2 dx
+
+inline double cohesion_amplitude(double gamma, double rc)    // Eq. C2
+{
+  const double rc2 = rc * rc, rc4 = rc2 * rc2;
+  return COHESION_KB * gamma / (M_PI * rc4 * rc4);
+}
+
+// The pair force along r_ij = x_i - x_j, F_ij = fc r_ij (Eq. C1: fc = -U'(r) / r): attractive
+// (fc < 0) beyond a, repulsive inside; symmetric in i, j, so momentum is conserved. Two particles
+// on top of each other (r = 0) have no direction between them: no force
+inline double cohesion_fpair(double A, double vi, double vj, double r, double rc)
+{
+  const double u = rc - r;
+  return r > 0.0 && r < rc ? -A * vi * vj * (r - COHESION_ROOT * rc) * u * u / r : 0.0;
+}
+
+// U_ij = -A V_i V_j [(r_c - a) L^3 / 3 - L^4 / 4], L = r_c - r: zero at r_c, dU/dr = Eq. C1
+inline double cohesion_energy(double A, double vi, double vj, double r, double rc)
+{
+  if (r >= rc) return 0.0;
+  const double L = rc - r, L3 = L * L * L;
+  return -A * vi * vj * ((1.0 - COHESION_ROOT) * rc * L3 / 3.0 - 0.25 * L3 * L);
 }
 
 }    // namespace CellPhysics

@@ -392,7 +392,10 @@ TEST_F(Fluid, SphBadInput)
 {
   box();
   EXPECT_ERROR("pair_style cell/sph 1",
-               "pair_style cell/sph.*expected keyword 'search' or 'stress'");
+               "pair_style cell/sph.*expected keyword 'search', 'stress' or 'cohesion'");
+  EXPECT_ERROR("pair_style cell/sph cohesion", "'cohesion' needs gamma");
+  EXPECT_ERROR("pair_style cell/sph cohesion -5", "cohesion: surface tension gamma must be > 0");
+  EXPECT_ERROR("pair_style cell/sph cohesion 0", "cohesion: surface tension gamma must be > 0");
   EXPECT_ERROR("pair_style cell/sph search", "'search' needs a kind");
   EXPECT_ERROR("pair_style cell/sph stress 0.2 4", "'stress' needs eps n dp, got 2");
   EXPECT_ERROR("pair_style cell/sph stress 0 4 1", "stress: strength eps must be > 0");

@@ -265,3 +265,64 @@ TEST(SPH, ArtificialStressLimits)
   EXPECT_EQ(sph_stress_fpair(p.m[0], p.m[1], p.R(0), p.R(1), 0.3, -0.2),
             sph_stress_fpair(p.m[1], p.m[0], p.R(1), p.R(0), 0.3, -0.2));
 }
+
+// The cohesion of Eqs. C1-C2 at the coarse cell's support r_c = 2s = 12.8 um, with particle
+// volumes of the coarse fluid (5.71^3 and 6.0^3 um^3) and gamma = 10 nN/um (10 mN/m).
+struct CohesionPair {
+  double rc = 12.8, gamma = 10.0, vi = 186.3, vj = 216.0;
+  double A() const { return cohesion_amplitude(gamma, rc); }
+  double Fr(double r) const { return cohesion_fpair(A(), vi, vj, r, rc) * r; }
+  double U(double r) const { return cohesion_energy(A(), vi, vj, r, rc); }
+};
+
+TEST(SPH, CohesionIsMinusGradientOfItsEnergy)
+{
+  // U is a quartic in r inside r_c, for which the five-point derivative is exact: only round-off
+  // is left, eps U / (h F) ~ 1e-12 of the force with h = 1e-3 r_c away from its roots a, r_c
+  CohesionPair p;
+  double worst = 0.0;
+  for (double q : {0.05, 0.2, 0.45, 0.7, 0.85, 0.97}) {
+    const double r = q * p.rc, h = 1e-3 * p.rc;
+    const double dUdr = (p.U(r - 2 * h) - 8 * p.U(r - h) + 8 * p.U(r + h) - p.U(r + 2 * h)) / (12 * h);
+    const double err = std::fabs(p.Fr(r) + dUdr) / std::fabs(dUdr);
+    worst = std::max(worst, err);
+    std::printf("r/r_c %.2f: F_r %.10g  -dU/dr %.10g  rel.err %.1e\n", q, p.Fr(r), -dUdr, err);
+  }
+  EXPECT_LT(worst, 1e-9);
+  // repulsive inside a, attractive beyond, nothing at and beyond r_c, U(r_c) = 0
+  EXPECT_GT(p.Fr(0.5 * p.rc), 0.0);
+  EXPECT_LT(p.Fr(0.7 * p.rc), 0.0);
+  EXPECT_EQ(p.Fr(p.rc), 0.0);
+  EXPECT_EQ(p.U(p.rc), 0.0);
+  EXPECT_EQ(p.Fr(1.2 * p.rc), 0.0);
+  EXPECT_EQ(cohesion_fpair(p.A(), p.vi, p.vj, 0.0, p.rc), 0.0);
+  EXPECT_EQ(cohesion_fpair(p.A(), p.vi, p.vj, 3.0, p.rc), cohesion_fpair(p.A(), p.vj, p.vi, 3.0, p.rc));
+}
+
+TEST(SPH, CohesionAddsNoPressureAndHasItsSurfaceTension)
+{
+  // a uniform fluid (pair distribution 1, number density n = 1 / V): the law's virial pressure
+  // -(2 pi n^2 / 3) int r^3 U' dr vanishes, and Kirkwood-Buff's gamma = (pi n^2 / 8) int r^4 U' dr
+  // is the gamma asked for. Simpson's rule on 20000 intervals integrates the polynomial to round-off.
+  CohesionPair p;
+  p.vi = p.vj = 200.0;
+  const double n = 1.0 / p.vi;
+  const int N = 20000;
+  double m3 = 0.0, m3abs = 0.0, m4 = 0.0;
+  for (int k = 0; k <= N; k++) {
+    const double r = p.rc * k / N, w = (k == 0 || k == N) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+    const double dU = -p.Fr(r);    // U' = -F_r
+    m3 += w * r * r * r * dU;
+    m3abs += w * std::fabs(r * r * r * dU);
+    m4 += w * r * r * r * r * dU;
+  }
+  const double step = p.rc / N / 3.0;
+  m3 *= step;
+  m3abs *= step;
+  m4 *= step;
+  const double gamma = M_PI * n * n / 8.0 * m4;
+  std::printf("int r^3 U' dr / int |r^3 U'| dr = %.2e; Kirkwood-Buff gamma %.12g nN/um (asked %g)\n",
+              m3 / m3abs, gamma, p.gamma);
+  EXPECT_LT(std::fabs(m3 / m3abs), 1e-12);
+  EXPECT_NEAR(gamma, p.gamma, 1e-10 * p.gamma);
+}
