@@ -588,6 +588,7 @@ def dry_hold(rep, S):
     q = dry_measure(d, None)
     q["stop"] = stop_reason(rep.p(f"{name}/log.lammps"))
     q["settings"] = {k: e[k] for k in ("Fa", "delta", "sphstress", "dp", "Lp", "psi", "wall", "wrinkle")}
+    q["settings"]["sphcoh"] = e.get("sphcoh", 0.0)
     x = d["water_fraction"]
     # Boyle-van 't Hoff with a slack wall: the enclosed volume follows the water, V/V0 = W/W0
     # times the turgid fluid's density over the rest density (Tait), as in the drying-cell study
@@ -666,8 +667,9 @@ def dry_hold_text(rep, q, d, pic, name, plain, sections):
           f"with the wall in tension-field theory (`-var wrinkle {e['wrinkle']}`: a compressed triangle carries "
           "nothing, the slack wall of docs/studies/drying-cell.md) and each cell's fluid held on its own wall: "
           f"`-var Fa {e['Fa']} -var delta {e['delta']}` (the adhesion, pair_coeff ... cell/virtual ... adhere) and "
-          f"`-var sphstress {e['sphstress']} -var dp {e['dp']}` (the artificial stress), the level-3 values of "
-          f"params.LEVELS; Lp {e['Lp']} ({e['Lp'] / lp3:.3g} times section 3's), air at {e['psi']} kPa. Water "
+          f"`-var sphstress {e['sphstress']} -var dp {e['dp']}` (the artificial stress)"
+          + (f" and `-var sphcoh {e['sphcoh']:g}` (the fluid's cohesion, pair_style cell/sph cohesion)" if e["sphcoh"] else "")
+          + f", the level-3 values of params.LEVELS; Lp {e['Lp']} ({e['Lp'] / lp3:.3g} times section 3's), air at {e['psi']} kPa. Water "
           f"{q['water0_pg']:.4g} pg down to {q['end_fraction']:.1%} in {q['time_us']:.3g} us.{stop}", "",
           "| water | enclosed volume | vs Boyle-van 't Hoff | wall area | block size | mean turgor (kPa) | sphericity |",
           "|---|---|---|---|---|---|---|", *rows, "",
@@ -691,8 +693,11 @@ def dry_hold_text(rep, q, d, pic, name, plain, sections):
           "shrink (measured on that single cell in the study), so the enclosed volume tells the fluid's to a few % "
           "only. A wall triangle shrinks in its plane without "
           "limit where a real wall would fold out of it, which ends the run where a triangle is crushed. "
-          "Coarse cells only: at level 4 the drying cell's protoplasm tears inside (docs/studies/drying-cell.md), so "
-          f"this is not a converged result. Broken walls {q['broken']}, debonded lamella bonds {q['debonded']}.", "",
+          + ("Coarse cells only (level 3): with the cohesion the single cell follows the water at level 4 too "
+             "(docs/studies/drying-cell.md), but the block has not been run there, so this is not a converged result. "
+             if e["sphcoh"] else "Coarse cells only: at level 4 the drying cell's protoplasm tears inside "
+             "(docs/studies/drying-cell.md), so this is not a converged result. ")
+          + f"Broken walls {q['broken']}, debonded lamella bonds {q['debonded']}.", "",
           f"Data: [{name}.csv]({rep.link(name + '.csv')}).", "")
 
 
