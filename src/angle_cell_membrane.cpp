@@ -120,7 +120,8 @@ void AngleCellMembrane::compute(int eflag, int vflag)
     }
 
     double fa[3], fc[3];
-    const double w = membrane_forces(G[type], t0[type], rest, s, fa, fc, wrinkle[type] > 0.0);
+    const double w =
+        membrane_forces(G[type], t0[type], rest, s, fa, fc, wrinkle[type] > 0.0, residual(type));
     if (eflag) eangle = w;
 
     double fb[3] = {-fa[0] - fc[0], -fa[1] - fc[1], -fa[2] - fc[2]};
@@ -192,7 +193,7 @@ bool AngleCellMembrane::triangle_forces(int type, int ia, int ib, int ic, double
   MembraneRest rest;
   MembraneStrain s;
   if (!shape(ia, ib, ic, rest, s, a, c) || !(s.J2 > 0.0)) return false;
-  membrane_forces(G[type], t0[type], rest, s, f[0], f[2], wrinkle[type] > 0.0);
+  membrane_forces(G[type], t0[type], rest, s, f[0], f[2], wrinkle[type] > 0.0, residual(type));
   for (int d = 0; d < 3; d++) f[1][d] = -f[0][d] - f[2][d];
   const int node[3] = {ia, ib, ic};
   double *fn[3] = {f[0], f[1], f[2]};
@@ -229,28 +230,29 @@ void AngleCellMembrane::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   angle_coeff N G t0 [gamma] [lamf value] [wrinkle yes|no]
+   angle_coeff N G t0 [gamma] [lamf value] [wrinkle yes|no] [residual r]
 ------------------------------------------------------------------------- */
 
 void AngleCellMembrane::coeff(int narg, char **arg)
 {
-  static const char *usage = "expected 'angle_coeff N G t0 [gamma] [lamf value] [wrinkle yes|no]' "
-                             "(shear modulus, wall thickness, edge damping, critical stretch, "
-                             "tension-field theory)";
+  static const char *usage = "expected 'angle_coeff N G t0 [gamma] [lamf value] [wrinkle yes|no] "
+                             "[residual r]' (shear modulus, wall thickness, edge damping, critical "
+                             "stretch, tension-field theory and its residual stiffness)";
   if (narg < 3) error->all(FLERR, "Angle_coeff cell/membrane: {}, got {} arguments", usage, narg);
   // the optional gamma is the one positional argument after t0 that is not a keyword
   int iarg = 3;
   const auto keyword = [&](int i) {
-    return strcmp(arg[i], "lamf") == 0 || strcmp(arg[i], "wrinkle") == 0;
+    return strcmp(arg[i], "lamf") == 0 || strcmp(arg[i], "wrinkle") == 0 ||
+        strcmp(arg[i], "residual") == 0;
   };
   if (iarg < narg && !keyword(iarg)) iarg++;
   const int ngamma = iarg - 3;
-  double lamf_one = 0.0, wrinkle_one = 0.0;
+  double lamf_one = 0.0, wrinkle_one = 0.0, residual_one = 0.0;
   for (; iarg < narg; iarg += 2) {
     if (!keyword(iarg))
       error->all(FLERR,
-                 "Angle_coeff cell/membrane: unknown keyword '{}', expected 'lamf' or "
-                 "'wrinkle'",
+                 "Angle_coeff cell/membrane: unknown keyword '{}', expected 'lamf', 'wrinkle' "
+                 "or 'residual'",
                  arg[iarg]);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Angle_coeff cell/membrane: keyword '{}' needs a value; {}", arg[iarg],
@@ -262,6 +264,13 @@ void AngleCellMembrane::coeff(int narg, char **arg)
                    "Angle_coeff cell/membrane: critical stretch lamf must be > 1 (a triangle fails "
                    "when its largest principal stretch passes lamf), got {}",
                    arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "residual") == 0) {
+      residual_one = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(residual_one > 0.0 && residual_one < 1.0))
+        error->all(FLERR,
+                   "Angle_coeff cell/membrane: residual must be > 0 and < 1 (the fraction of the "
+                   "full sheet's stiffness a wrinkled triangle keeps, Eq. M4), got {}",
+                   arg[iarg + 1]);
     } else {
       const std::string v = arg[iarg + 1];
       if (v != "yes" && v != "no")
@@ -272,6 +281,14 @@ void AngleCellMembrane::coeff(int narg, char **arg)
       wrinkle_one = v == "yes" ? 1.0 : 0.0;
     }
   }
+  if (residual_one > 0.0 && wrinkle_one == 0.0)
+    error->all(FLERR,
+               "Angle_coeff cell/membrane: residual {} needs wrinkle yes: it is the stiffness a "
+               "wrinkled triangle keeps (Eq. M4)",
+               residual_one);
+  // one per-type array for both, so that restart files keep their layout: 0 for the full sheet,
+  // 1 + r for tension-field theory with the residual r
+  if (wrinkle_one > 0.0) wrinkle_one += residual_one;
   if (atom->nangletypes == 0)
     error->all(FLERR,
                "Angle_coeff cell/membrane: the system has no angle types, so no wall triangles "
@@ -362,6 +379,7 @@ void AngleCellMembrane::write_data(FILE *fp)
     fprintf(fp, "%d %.15g %.15g %.15g", i, G[i], t0[i], gamma[i]);
     if (lamf[i] > 0.0) fprintf(fp, " lamf %.15g", lamf[i]);
     if (wrinkle[i] > 0.0) fprintf(fp, " wrinkle yes");
+    if (residual(i) > 0.0) fprintf(fp, " residual %g", residual(i));
     fprintf(fp, "\n");
   }
 }
@@ -374,7 +392,7 @@ double AngleCellMembrane::single(int type, int i1, int i2, int i3)
   MembraneRest rest;
   MembraneStrain s;
   if (!shape(i1, i2, i3, rest, s, a, c) || !(s.J2 > 0.0)) return 0.0;
-  return membrane_energy(G[type], t0[type], rest, s, wrinkle[type] > 0.0);
+  return membrane_energy(G[type], t0[type], rest, s, wrinkle[type] > 0.0, residual(type));
 }
 
 /* ---------------------------------------------------------------------- */

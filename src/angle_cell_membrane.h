@@ -48,7 +48,8 @@ class AngleCellMembrane : public Angle {
 
  protected:
   double *G, *t0, *gamma, *lamf;
-  double *wrinkle;    // 1: tension-field theory (Eq. M3), 0: the full sheet (Eq. M1)
+  double *wrinkle;    // 0: full sheet (Eq. M1); 1 + r: tension-field theory (M3, M4: residual r)
+  double residual(int type) const { return wrinkle[type] > 0.0 ? wrinkle[type] - 1.0 : 0.0; }
   int iref;         // index of the reference-position array d2_cellref in atom->darray
   // the bookkeeping of failures (fix CELL_TETHER_BREAK) when some angle type has a critical
   // stretch lamf, else null

@@ -203,12 +203,12 @@ waterdry() {  # LP TARGET VTK
     -var vtk "$3" -var nmax 200000
 }
 # the drying cell of docs/studies/drying-cell.md in a block: the wall that takes no compression
-# (membrane, wrinkle yes) and the fluid that holds it (the level's adhesion Fa, delta, the
-# artificial stress with its dp and the fluid's cohesion); inflated with the membrane wall from the
-# same data. The first -var of a name wins: hold comes before model's wall (WALL), whatever that is
-read -r FA3 DELTA3 DP3 COH3 < <(level_params 3 fa delta dp coh)
-hold=(-var wall membrane -var wrinkle yes -var Fa $FA3 -var delta $DELTA3 -var sphstress 0.2 -var dp $DP3
-      -var sphcoh $COH3)
+# (membrane, wrinkle yes, with the residual stiffness that keeps its triangles open) and the fluid
+# that holds it (the level's adhesion Fa, delta, the artificial stress with its dp and the fluid's
+# cohesion); inflated with the membrane wall from the same data. The first -var of a name wins: hold comes before model's wall (WALL), whatever that is
+read -r FA3 DELTA3 DP3 COH3 RES3 < <(level_params 3 fa delta dp coh residual)
+hold=(-var wall membrane -var wrinkle yes -var residual $RES3 -var Fa $FA3 -var delta $DELTA3
+      -var sphstress 0.2 -var dp $DP3 -var sphcoh $COH3)
 waterinflhold() {
   read -r r k < "$out/water-inflate/reach-special.txt"
   lmp -in "$INPUTS/in.tissue-inflate" -screen none "${hold[@]}" $(model "$r") \

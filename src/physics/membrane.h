@@ -160,12 +160,32 @@ inline void membrane_response(const MembraneStrain &s, bool relax, double K[2][2
   dev = (s.C2[0][0] - 1.0) + (s.C2[1][1] - 1.0) + (1.0 - s.J2) / s.J2;
 }
 
-// Energy of the triangle (Eq. M1, or Eq. M3 with relax).
+// Tension-field theory with a residual stiffness (Eq. M4): with relax and residual r > 0 the
+// triangle stores (1 - r) W_M3 + r W_M1, so that a wrinkled or slack triangle keeps the fraction r
+// of the full sheet's response. Eq. M3 alone lets a triangle shrink in its plane to nothing (its
+// slack energy is zero), which a real wall does not: it folds out of its plane, and the bending
+// that folding costs resists the compression. The full sheet's W_M1 grows without bound as the
+// triangle's area goes to zero (the 1/J2 term), so a small r keeps every triangle open while the
+// wall as a whole shrinks nearly free. Energy and response blend alike: the forces stay minus
+// the gradient of the energy.
+inline void membrane_response(const MembraneStrain &s, bool relax, double residual, double K[2][2],
+                              double &dev)
+{
+  membrane_response(s, relax, K, dev);
+  if (!relax || residual <= 0.0) return;
+  double Kf[2][2], devf;
+  membrane_response(s, false, Kf, devf);
+  for (int p = 0; p < 2; p++)
+    for (int q = 0; q < 2; q++) K[p][q] = (1.0 - residual) * K[p][q] + residual * Kf[p][q];
+  dev = (1.0 - residual) * dev + residual * devf;
+}
+
+// Energy of the triangle (Eq. M1, or Eq. M3 with relax, Eq. M4 with a residual).
 inline double membrane_energy(double G, double t0, const MembraneRest &rest,
-                              const MembraneStrain &s, bool relax = false)
+                              const MembraneStrain &s, bool relax = false, double residual = 0.0)
 {
   double K[2][2], dev;
-  membrane_response(s, relax, K, dev);
+  membrane_response(s, relax, residual, K, dev);
   return 0.5 * G * t0 * rest.area * dev;
 }
 
@@ -174,10 +194,10 @@ inline double membrane_energy(double G, double t0, const MembraneRest &rest,
 // area). Returns the energy W, which the response gives at no extra cost.
 inline double membrane_forces(double G, double t0, const MembraneRest &rest,
                               const MembraneStrain &s, double fa[3], double fc[3],
-                              bool relax = false)
+                              bool relax = false, double residual = 0.0)
 {
   double K[2][2], dev;
-  membrane_response(s, relax, K, dev);
+  membrane_response(s, relax, residual, K, dev);
   const double k = G * t0 * rest.area;
   for (int d = 0; d < 3; d++) {
     // P = k F K (first Piola stress times volume), then dW/d[a c] = P D^-T

@@ -38,8 +38,8 @@ SETTINGS = "settings.json"
 # s = 2.07 um (halving s to 1.6 would leave s/dx = 0.82, fewer kernel neighbours than at the
 # other levels; the formula 3.2 2^(4-level) gives 1.6 there and is not the table). Level 5 has a
 # wall node a quarter as heavy: its fastest tether mode (about 4 ns period) needs dt = 0.5 ns.
-# Four entries serve the drying cell's features, off by default (cell-model.lmp's Fa, sphstress
-# and sphcoh; docs/studies/drying-cell.md): delta, the range of the fluid's adhesion to its own wall
+# Five entries serve the drying cell's features, off by default (cell-model.lmp's Fa, sphstress
+# and sphcoh, cell-wall.lmp's residual; docs/studies/drying-cell.md): delta, the range of the fluid's adhesion to its own wall
 # beyond r0, r0/16 (a wider well pulls the wall in above zero turgor: r0/4 costs 7% of the volume
 # at low turgor, r0/16 nothing); fa, the adhesion strength that holds the suction of a cell dried
 # to 2.5 Pi0 (Fa >= |P| A_c, margin 5, the contact area A_c ~ r0^2: a level finer, a quarter); dp,
@@ -53,11 +53,15 @@ SETTINGS = "settings.json"
 # cohesion (pair_style cell/sph cohesion, mN/m): a void of radius l opens under a tension |P| only
 # if l > 3 coh / |P|; 10 mN/m keeps voids under 10 um at the 3 kPa a slack wall leaves the fluid
 # (level 4), and its bias on the turgor stays small (8 kPa near zero turgor at level 3; water's 72
-# mN/m reads 41 kPa there). The same at every level, measured at levels 3 and 4.
+# mN/m reads 41 kPa there). The same at every level, measured at levels 3 and 4. residual, the
+# stiffness a wrinkled membrane triangle keeps (angle_coeff ... wrinkle yes residual, Eq. M4): the
+# smallest tried that keeps every triangle open while the coarse cell dries to 20% of its water
+# (without it one is crushed at 21%; 1e-3 holds too but reads a suction of 48 kPa there, 1e-4 15
+# kPa); a fraction of the stiffness, the same at every level.
 LEVELS = {
-    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001, delta=0.2, dp=4.57, fa=2.0e4, coh=10.0),
-    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001, delta=0.1, dp=3.05, fa=5.0e3, coh=10.0),
-    5: dict(nfluid=14000, s=2.07, r0=0.8, f0=1.25e3, reach=1.0, dt=0.0005, delta=0.05, dp=1.95, fa=1.25e3, coh=10.0),
+    3: dict(nfluid=440, s=6.4, r0=3.2, f0=8.0e4, reach=4.0, dt=0.001, delta=0.2, dp=4.57, fa=2.0e4, coh=10.0, residual=1.0e-4),
+    4: dict(nfluid=3500, s=3.2, r0=1.6, f0=1.0e4, reach=2.0, dt=0.001, delta=0.1, dp=3.05, fa=5.0e3, coh=10.0, residual=1.0e-4),
+    5: dict(nfluid=14000, s=2.07, r0=0.8, f0=1.25e3, reach=1.0, dt=0.0005, delta=0.05, dp=1.95, fa=1.25e3, coh=10.0, residual=1.0e-4),
 }
 # the resolutions the experiment and validation scripts name
 RES_LEVEL = {"coarse": 3, "paper": 4, "study": 4, "fine": 5}

@@ -44,7 +44,8 @@ Tri make(const double F2[2][2])
   return t;
 }
 
-void evaluate(const Tri &t, double &E, double f[3][3], double &area, bool relax = false)
+void evaluate(const Tri &t, double &E, double f[3][3], double &area, bool relax = false,
+              double residual = 0.0)
 {
   double A[3], C[3], a[3], c[3];
   for (int d = 0; d < 3; d++) {
@@ -57,8 +58,8 @@ void evaluate(const Tri &t, double &E, double f[3][3], double &area, bool relax 
   ASSERT_TRUE(membrane_rest(A, C, rest));
   MembraneStrain s;
   membrane_strain(rest, a, c, s);
-  E = membrane_energy(G, T0, rest, s, relax);
-  membrane_forces(G, T0, rest, s, f[0], f[2], relax);
+  E = membrane_energy(G, T0, rest, s, relax, residual);
+  membrane_forces(G, T0, rest, s, f[0], f[2], relax, residual);
   for (int d = 0; d < 3; d++) f[1][d] = -f[0][d] - f[2][d];
   const double n[3] = {a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
   area = 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -94,10 +95,10 @@ double A0()
 
 // largest |force + central-difference energy gradient (step 1e-5)| over the nine components of
 // triangle t, relative to its largest force; show prints each component
-double gradient_error(const Tri &t, bool relax, bool show)
+double gradient_error(const Tri &t, bool relax, bool show, double residual = 0.0)
 {
   double E, f[3][3], area;
-  evaluate(t, E, f, area, relax);
+  evaluate(t, E, f, area, relax, residual);
   double worst = 0, fmax = 0;
   for (auto &r : f) for (double v : r) fmax = std::max(fmax, std::fabs(v));
   for (int n = 0; n < 3; n++)
@@ -107,8 +108,8 @@ double gradient_error(const Tri &t, bool relax, bool show)
       p.x[n][d] += h;
       m.x[n][d] -= h;
       double Ep, Em, fp[3][3], ap;
-      evaluate(p, Ep, fp, ap, relax);
-      evaluate(m, Em, fp, ap, relax);
+      evaluate(p, Ep, fp, ap, relax, residual);
+      evaluate(m, Em, fp, ap, relax, residual);
       const double fd = -(Ep - Em) / (2 * h);
       worst = std::max(worst, std::fabs(fd - f[n][d]) / fmax);
       if (show) std::printf("node %d dir %d  force %.12g  -dE/dx %.12g\n", n, d, f[n][d], fd);
@@ -332,5 +333,40 @@ TEST(MembraneElement, TensionFieldForcesAreMinusEnergyGradient)
     if (wrinkled) EXPECT_LT(E, Efull);
     else EXPECT_EQ(E, Efull);
     EXPECT_LT(worst, 1e-8);
+  }
+}
+
+TEST(MembraneElement, ResidualStiffnessBlendsAndHoldsTrianglesOpen)
+{
+  // Eq. M4: (1 - r) W_M3 + r W_M1, forces minus its gradient, in a wrinkled and in a slack state
+  const double r = 0.01;
+  const double Fw[2][2] = {{1.25, 0.15}, {-0.05, 0.7}};
+  const double Fs[2][2] = {{0.8, 0.1}, {0.05, 0.6}};
+  for (const auto *F2 : {Fw, Fs}) {
+    Tri t = make(F2);
+    t.x[2][2] += 0.1;
+    double E, f[3][3], area, Et, Ef;
+    evaluate(t, E, f, area, true, r);
+    evaluate(t, Et, f, area, true);
+    evaluate(t, Ef, f, area, false);
+    const double worst = gradient_error(t, true, false, r);
+    std::printf("%s: E %.10g = (1 - r) %.10g + r %.10g; largest difference / largest force %.2e\n",
+                F2 == Fw ? "wrinkled" : "slack", E, Et, Ef, worst);
+    EXPECT_NEAR(E, (1 - r) * Et + r * Ef, 1e-13 * std::fabs(Ef));
+    EXPECT_LT(worst, 1e-8);
+  }
+  // a slack triangle squeezed towards no area: tension-field theory stores nothing, the residual
+  // a growing energy (the 1/J2 term of Eq. M1), and pushes the nodes apart
+  double last = 0.0;
+  for (double k : {0.5, 0.1, 0.03, 0.01}) {
+    const double F2[2][2] = {{0.9, 0.0}, {0.0, k}};
+    Tri t = make(F2);
+    double E, f[3][3], area, Et;
+    evaluate(t, Et, f, area, true);
+    evaluate(t, E, f, area, true, r);
+    std::printf("area / rest area %.3f: W_M3 %.3g, W_M4 %.6g\n", 0.9 * k, Et, E);
+    EXPECT_EQ(Et, 0.0);
+    EXPECT_GT(E, last);
+    last = E;
   }
 }
