@@ -226,6 +226,12 @@ def test_bad_input_refused(wall):
         "wrinkle not yes or no": (SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
             f"angle_coeff     1 {G} {T0} 0.0", f"angle_coeff     1 {G} {T0} 0.0 wrinkle maybe"),
             "wrinkle must be 'yes'"),
+        "residual out of range": (SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
+            f"angle_coeff     1 {G} {T0} 0.0", f"angle_coeff     1 {G} {T0} 0.0 wrinkle yes residual 0"),
+            "residual must be > 0 and < 1"),
+        "residual without wrinkle": (SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
+            f"angle_coeff     1 {G} {T0} 0.0", f"angle_coeff     1 {G} {T0} 0.0 residual 1e-4"),
+            "residual 0.0001 needs wrinkle yes"),
         "negative modulus": (SETUP.format(G=-1.0, t0=T0, gamma=0.0, dt=0.001),
                              "shear modulus G must be > 0"),
         "too few arguments": (SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001).replace(
@@ -315,3 +321,39 @@ print           "BACK $(eangle:%.17g)"
         print(f"read back from the {how} file: energy {back[how]:.10g}")
         T.check(f"the {how} file keeps the tension-field wall", abs(back[how] / E - 1) < 1e-12,
                 f"{back[how]:.10g} vs {E:.10g}")
+
+
+def test_residual_stiffness_of_a_slack_wall(wall):
+    """Eq. M4 on the wall: shrunk by 0.95 in every direction every triangle is slack, so with
+    wrinkle yes residual r the wall stores r times the full sheet's energy (Eq. M1) and pushes back
+    with r times its virial; write_data and a restart keep the residual (the same energy read
+    back)."""
+    d = wall[0]
+    r = 1e-3
+    full = SETUP.format(G=G, t0=T0, gamma=0.0, dt=0.001)
+    res = full.replace(f"angle_coeff     1 {G} {T0} 0.0", f"angle_coeff     1 {G} {T0} 0.0 wrinkle yes residual {r}")
+    Ef, xff = scaled(full, 0.95, 0.95, 0.95, d, "full-0.95")
+    E, xf = scaled(res, 0.95, 0.95, 0.95, d, "residual-0.95", """
+write_data      residual.data
+write_restart   residual.restart
+""")
+    print(f"wall scaled by 0.95: residual {r}: energy {E:.10g}, sum x.f {xf:.10g}; the full sheet "
+          f"{Ef:.10g}, {xff:.10g}")
+    T.check("a slack wall with a residual stores r x the full sheet's energy", abs(E / (r * Ef) - 1) < 1e-12,
+            f"{E:.10g} vs {r * Ef:.10g}")
+    T.check("and pushes back with r x its virial", abs(xf / (r * xff) - 1) < 1e-10, f"{xf:.10g} vs {r * xff:.10g}")
+    coeffs = " ".join(read_data(os.path.join(d, "residual.data")).rows("Angle Coeffs")[0])
+    T.check("write_data keeps the residual", coeffs.endswith(f"wrinkle yes residual {r:g}"), coeffs)
+    _, log = T.lmp(f"""
+units           micro
+read_restart    residual.restart
+fix             cell all property/atom rmass d_rho d_drho d2_cellref 3 ghost yes
+pair_coeff      * *
+special_bonds   lj 0 1 1
+comm_modify     cutoff 8.0
+thermo_style    custom step eangle
+run             0
+print           "BACK $(eangle:%.17g)"
+""", cwd=d, log="log.residual-restart")
+    back = float([l for l in log.splitlines() if l.startswith("BACK")][-1].split()[1])
+    T.check("a restart keeps the residual", abs(back / E - 1) < 1e-12, f"{back:.10g} vs {E:.10g}")
