@@ -138,39 +138,37 @@ def membrane_runs(rundir):
     return {"m": m, "r": dry(d, "r", Fa=FA, **back), "n": dry(d, "n", **wall), "w": dry(d, "w", Fa=FA, **far)}
 
 
+def slack_reference(a):
+    """A run's last W/W0 and V/V0, and Boyle-van 't Hoff's V/V0 with a slack wall: the fluid at
+    P = 0 fills V = W / rho(0); V0 held it at the turgor's density, rho(P0) / rho(0) = (1 + P0 /
+    B)^(1/7) (Tait, B = rho0 c^2 / 7)."""
+    B = params.table()["rho0"] * params.table()["c"] ** 2 / 7.0
+    w = a["water_pg"][-1] / a["water_pg"][0]
+    return w, a["volume_um3"][-1] / a["volume_um3"][0], w * (1.0 + a["turgor_kPa"][0] / B) ** (1.0 / 7.0)
+
+
 def test_slack_wall_follows_the_water(membrane_runs):
     m, (M, U, W0, leaked) = membrane_runs["m"]
     n, _ = membrane_runs["n"]
     T.check("(m) fluid mass = W0 + uptake (1e-12 of W0); nothing outside the wall",
             abs(M - W0 - U) < 1e-12 * W0 and leaked == 0, f"{M - W0 - U:.3g} pg, leaked {leaked:g}")
-    # Boyle-van 't Hoff with a slack wall: the fluid at P = 0 fills V = W / rho(0); V0 held it at
-    # the turgor's density, rho(P0) / rho(0) = (1 + P0 / B)^(1/7) (Tait, B = rho0 c^2 / 7)
-    B = params.table()["rho0"] * params.table()["c"] ** 2 / 7.0
-    w = m["water_pg"][-1] / m["water_pg"][0]
-    ref = w * (1.0 + m["turgor_kPa"][0] / B) ** (1.0 / 7.0)
-    v = m["volume_um3"][-1] / m["volume_um3"][0]
+    w, v, ref = slack_reference(m)
     T.check("(m) at 1.5 Pi0 the enclosed volume follows Boyle-van 't Hoff (5%)", abs(v / ref - 1) < 0.05,
             f"V/V0 {v:.4f} vs {ref:.4f} ({v / ref - 1:+.2%}), W/W0 {w:.4f}")
     T.check("(m) the wrinkled wall needs no suction (|P| < 2 kPa)", abs(m["turgor_kPa"][-1]) < 2.0,
             f"P {m['turgor_kPa'][-1]:.2f} kPa")
     # without the adhesion the wall relaxes to its rest shape and stays there: far outside the 5%
     # (a third of the water gone leaves it about 45% above Boyle-van 't Hoff's volume)
-    wn = n["water_pg"][-1] / n["water_pg"][0]
-    refn = wn * (1.0 + n["turgor_kPa"][0] / B) ** (1.0 / 7.0)
-    vn = n["volume_um3"][-1] / n["volume_um3"][0]
+    _, vn, refn = slack_reference(n)
     T.check("(n) without the adhesion the wall does not follow (V > 1.2 x Boyle-van 't Hoff's)",
             vn / refn > 1.2, f"V/V0 {vn:.4f} vs {refn:.4f} ({vn / refn - 1:+.1%})")
-
 
 
 def test_dried_to_a_fifth_of_its_water(membrane_runs):
     w, (M, U, W0, leaked) = membrane_runs["w"]
     T.check("(w) fluid mass = W0 + uptake (1e-12 of W0); nothing outside the wall",
             abs(M - W0 - U) < 1e-12 * W0 and leaked == 0, f"{M - W0 - U:.3g} pg, leaked {leaked:g}")
-    B = params.table()["rho0"] * params.table()["c"] ** 2 / 7.0
-    x = w["water_pg"][-1] / w["water_pg"][0]
-    ref = x * (1.0 + w["turgor_kPa"][0] / B) ** (1.0 / 7.0)
-    v = w["volume_um3"][-1] / w["volume_um3"][0]
+    x, v, ref = slack_reference(w)
     T.check("(w) dried to 5 Pi0: the run reaches the last level", abs(w["psi_ext_kPa"][-1] - 5 * PI0) < 1e-6,
             f"last psi_ext {w['psi_ext_kPa'][-1]:.1f} kPa")
     T.check("(w) at 5 Pi0 (20% of the water) the enclosed volume follows Boyle-van 't Hoff (5%)",
