@@ -4,6 +4,7 @@ the main numbers, what passed; every number from the report's summary (rep.S) or
 settings, after the sections have been measured."""
 from .. import reporting
 from .tissuedata import and_list, fmt, span
+from .water import bvh_words
 
 
 def pair_words(rep):
@@ -130,10 +131,9 @@ def water_words(rep):
     h = W.get("dry_hold")
     if not h:
         return out + "."
-    worst = max(abs(v) for v in h["bvh_gap"].values())
-    return (out + f"; with its fluid held on walls that take no compression it shrank with its water, the enclosed "
-            f"volume within {100 * worst:.2g}% of Boyle-van 't Hoff's down to {h['end_fraction']:.0%} water"
-            + (" (where the run stopped on an error)" if h["stop"] else "") + " (coarse cells, not converged in resolution).")
+    return (out + "; with its fluid held on walls that take no compression it shrank with its water, the enclosed "
+            "volume " + bvh_words(h["bvh_gap"]) + f" (the run ends at {h['end_fraction']:.0%}"
+            + (", stopped on an error" if h["stop"] else "") + "; coarse cells, not converged in resolution).")
 
 
 def stage_words(rep):

@@ -143,7 +143,9 @@ def section_text(rows):
     """The sections against the published apple cells (lines for rep.w)."""
     if not rows:
         return []
-    ws = sorted(rows, reverse=True)
+    # the frames nearest the pictures' water contents, the first and the last
+    allw = sorted(rows, reverse=True)
+    ws = sorted({allw[0], allw[-1], *(min(allw, key=lambda w: abs(w - f)) for f in FRACTIONS)}, reverse=True)
     first, last = rows[ws[0]], rows[ws[-1]]
     pub, fresh = PUBLISHED_SECTIONS["dried"], PUBLISHED_SECTIONS["fresh"]
     head = "| water | " + " | ".join(f"{w:.0%}" for w in ws) + " | apple, end of hot-air drying |"
@@ -589,6 +591,7 @@ def dry_hold(rep, S):
     q["stop"] = stop_reason(rep.p(f"{name}/log.lammps"))
     q["settings"] = {k: e[k] for k in ("Fa", "delta", "sphstress", "dp", "Lp", "psi", "wall", "wrinkle")}
     q["settings"]["sphcoh"] = e.get("sphcoh", 0.0)
+    q["settings"]["residual"] = e.get("residual", 0.0)
     x = d["water_fraction"]
     # Boyle-van 't Hoff with a slack wall: the enclosed volume follows the water, V/V0 = W/W0
     # times the turgid fluid's density over the rest density (Tait), as in the drying-cell study
@@ -661,7 +664,6 @@ def dry_hold_text(rep, q, d, pic, name, plain, sections):
                     f"{at(d, f, 'wall_area_um2') / d['wall_area_um2'][0]:.4f} | "
                     f"{np.interp(f, x[::-1], (mean_edge(d) / mean_edge(d)[0])[::-1]):.4f} | "
                     f"{at(d, f, 'turgor_mean_kPa'):.4g} | {at(d, f, 'sphericity'):.4f} |")
-    worst = max(abs(v) for v in q["bvh_gap"].values()) if q["bvh_gap"] else float("nan")
     rep.w(title_hold(), "",
           "The same 2x2x2 block inflated with the membrane wall (`-var wall membrane`) and dried by `in.tissue-dry` "
           f"with the wall in tension-field theory (`-var wrinkle {e['wrinkle']}`: a compressed triangle carries "
@@ -669,6 +671,8 @@ def dry_hold_text(rep, q, d, pic, name, plain, sections):
           f"`-var Fa {e['Fa']} -var delta {e['delta']}` (the adhesion, pair_coeff ... cell/virtual ... adhere) and "
           f"`-var sphstress {e['sphstress']} -var dp {e['dp']}` (the artificial stress)"
           + (f" and `-var sphcoh {e['sphcoh']:g}` (the fluid's cohesion, pair_style cell/sph cohesion)" if e["sphcoh"] else "")
+          + (f", the triangles keeping `-var residual {e['residual']:g}` of their stiffness (Eq. M4)"
+             if e["residual"] else "")
           + f", the level-3 values of params.LEVELS; Lp {e['Lp']} ({e['Lp'] / lp3:.3g} times section 3's), air at {e['psi']} kPa. Water "
           f"{q['water0_pg']:.4g} pg down to {q['end_fraction']:.1%} in {q['time_us']:.3g} us.{stop}", "",
           "| water | enclosed volume | vs Boyle-van 't Hoff | wall area | block size | mean turgor (kPa) | sphericity |",
@@ -680,7 +684,7 @@ def dry_hold_text(rep, q, d, pic, name, plain, sections):
           *hold_rate_text(q.get("rate"), e),
           *section_text(sections),
           "*What the model gives.* Held on their walls, the cells shrink with their water: the enclosed volume stays "
-          f"within {100 * worst:.2g}% of Boyle-van 't Hoff's down to {q['end_fraction']:.0%} water, and the block with "
+          + bvh_words(q["bvh_gap"]) + f" (the run ends at {q['end_fraction']:.0%}), and the block with "
           f"it (size {q['size_at'].get('0.8', float('nan')):.4f} of its turgid size at 80% water, against "
           f"{plain.get('size_at', {}).get('0.8', float('nan')):.4f} in section 3); the outer walls crumple (pictures). "
           "Unlike the single cell of the study, which follows at zero pressure, the block's fluid reads a growing "
@@ -691,14 +695,46 @@ def dry_hold_text(rep, q, d, pic, name, plain, sections):
           "\"Continuous drying\"); why is open. From 80% water on the enclosed volume falls below Boyle-van 't Hoff's: "
           "the fluid's particle volumes (m/rho) reach past the enclosed volume by a share that grows as the cells "
           "shrink (measured on that single cell in the study), so the enclosed volume tells the fluid's to a few % "
-          "only. A wall triangle shrinks in its plane without "
-          "limit where a real wall would fold out of it, which ends the run where a triangle is crushed. "
+          "only. " + crush_text(q, e) + " "
           + ("Coarse cells only (level 3): with the cohesion the single cell follows the water at level 4 too "
              "(docs/studies/drying-cell.md), but the block has not been run there, so this is not a converged result. "
              if e["sphcoh"] else "Coarse cells only: at level 4 the drying cell's protoplasm tears inside "
              "(docs/studies/drying-cell.md), so this is not a converged result. ")
           + f"Broken walls {q['broken']}, debonded lamella bonds {q['debonded']}.", "",
           f"Data: [{name}.csv]({rep.link(name + '.csv')}).", "")
+
+
+def bvh_band(gap, band=0.05):
+    """The lowest water fraction (of gap's keys, '0.9' ...) down to which the enclosed volume stays
+    within band of Boyle-van 't Hoff's at every listed fraction, and the listed ones beyond it."""
+    keys = sorted(gap, key=float, reverse=True)
+    inside = None
+    for k in keys:
+        if abs(gap[k]) > band:
+            break
+        inside = k
+    return inside, [k for k in keys if inside is None or float(k) < float(inside)]
+
+
+def bvh_words(gap):
+    """'within 5% of Boyle-van 't Hoff's down to 80% water; below that -16% at 40%, -24% at 20%'."""
+    inside, beyond = bvh_band(gap)
+    head = (f"within 5% of Boyle-van 't Hoff's down to {float(inside):.0%} water" if inside else
+            "outside 5% of Boyle-van 't Hoff's from the first record on")
+    if not beyond:
+        return head
+    return head + "; beyond, " + ", ".join(f"{gap[k]:+.0%} at {float(k):.0%}" for k in beyond)
+
+
+def crush_text(q, e):
+    """What the wall's triangles did: crushed in tension-field theory, or held open by the residual
+    stiffness (angle_coeff ... residual, Eq. M4)."""
+    if not e.get("residual"):
+        return ("A wall triangle shrinks in its plane without limit where a real wall would fold out of it, which "
+                "ends the run where a triangle is crushed.")
+    held = (f"With the residual stiffness (`-var residual {e['residual']:g}`) no triangle is crushed: the block "
+            f"dries to {q['end_fraction']:.0%} of its water")
+    return held + (" (the run stopped on another error)." if q["stop"] else ", the end of the run.")
 
 
 def hold_rate_text(r, e):
