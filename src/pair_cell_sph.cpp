@@ -173,14 +173,9 @@ template <bool STRESS, bool COHESION> void PairCellSPH::forces()
         if (eflag_either)
           evdwl = sph_stress_energy(mi, mj, ri, stress_r[j], fn * f, wdpi[jt], stress_n);
       }
-      // the cohesion of the cell's fluid (Eq. C1)
-      if (COHESION) {
-        const int jt = type[j];
-        const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
-        const double volj = mj * qj[2];
-        fp += cohesion_fpair(cohai[jt], voli, volj, r, 2.0 * si[jt]);
-        if (eflag_either) evdwl += cohesion_energy(cohai[jt], voli, volj, r, 2.0 * si[jt]);
-      }
+      if (COHESION)
+        fp += cohesion_pair(cohai[type[j]], 2.0 * si[type[j]], voli, mj * qj[2],
+                            delx * delx + dely * dely + delz * delz, evdwl);
       const double fv = sph_viscous_fvel(mi, mj, mui, qj[3], irhoi, qj[2], wr);
       const double fx = fp * delx + fv * dvx;
       const double fy = fp * dely + fv * dvy;
@@ -200,6 +195,19 @@ template <bool STRESS, bool COHESION> void PairCellSPH::forces()
     ff[3 * i + 1] = fyi;
     ff[3 * i + 2] = fzi;
   }
+}
+
+/* ----------------------------------------------------------------------
+   one pair's cohesion (Eq. C1) at distance^2 rsq: its central force factor, its energy added to
+   evdwl when energy is tallied
+------------------------------------------------------------------------- */
+
+double PairCellSPH::cohesion_pair(double a, double rc, double voli, double volj, double rsq,
+                                  double &evdwl) const
+{
+  const double r = std::sqrt(rsq);
+  if (eflag_either) evdwl += cohesion_energy(a, voli, volj, r, rc);
+  return cohesion_fpair(a, voli, volj, r, rc);
 }
 
 /* ----------------------------------------------------------------------

@@ -101,6 +101,8 @@ class PairCellSPH : public Pair {
   void fluid_quantities(int eflag);
   // Eq. 5 over the pairs; with STRESS, the artificial stress as well; with COHESION, Eq. C1
   template <bool STRESS, bool COHESION> void forces();
+  double cohesion_pair(double a, double rc, double voli, double volj, double rsq,
+                       double &evdwl) const;
   void stress_settings(int narg, char **arg);
 };
 
