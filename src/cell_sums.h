@@ -32,11 +32,14 @@ struct CellSum {
   double open_area = 0.0;    // of the triangles that face the outside (Eq. W4, exposed outside)
   double feq = 0.0;          // equatorial force across the cell's plane (Eq. 23)
   // the fluid particles of a group
-  double nfluid = 0.0;       // N_f
-  double mass = 0.0;         // the cell's water W (Eq. W1)
-  double pressure = 0.0;     // sum of P_i
-  double stiffness = 0.0;    // sum of dP_i/drho rho_i / m_i (see add_fluid)
-  double density = 0.0;      // sum of rho_i
+  double nfluid = 0.0;              // N_f
+  double mass = 0.0;                // the cell's water W (Eq. W1)
+  double pressure = 0.0;            // sum of P_i
+  double stiffness = 0.0;           // sum of dP_i/drho rho_i / m_i (see add_fluid)
+  double density = 0.0;             // sum of rho_i
+  double fluid_volume = 0.0;        // sum of V_i = m_i / rho_i
+  double volume_pressure = 0.0;     // sum of P_i V_i
+  double volume_stiffness = 0.0;    // sum of dP_i/drho V_i
   // the bonds
   double stretch = 0.0;       // sum of l/l0 over the wall's intact tethers
   double ntethers = 0.0;      // those tethers
@@ -45,7 +48,7 @@ struct CellSum {
   double glued_area = 0.0;    // their area
 };
 // reduce() sums them as an array of doubles
-static_assert(std::is_standard_layout<CellSum>::value && sizeof(CellSum) == 15 * sizeof(double),
+static_assert(std::is_standard_layout<CellSum>::value && sizeof(CellSum) == 18 * sizeof(double),
               "CellSum must hold doubles only");
 
 class CellSums {

@@ -34,7 +34,7 @@ void CellWater::update(const CellIndex &cells, const std::vector<GluedPair> &pai
     pinow[m] = (settings.solute && water0[m] > 0.0 && s.mass > 0.0)
         ? solute_osmotic_potential(pi0[m], water0[m], s.mass)
         : pi0[m];
-    psi[m] = s.nfluid > 0 ? s.pressure / s.nfluid + pinow[m] : pinow[m];
+    psi[m] = pressure(m) + pinow[m];
     glued[m] = 0.0;
   }
   for (const GluedPair &p : pairs) {
@@ -48,11 +48,32 @@ void CellWater::update(const CellIndex &cells, const std::vector<GluedPair> &pai
         : exposed_area(sums[m].area, sums[m].rest_area, glued[m]);
 }
 
-// its pressure and, with the solutes kept, its osmotic potential (dPi/dW = -Pi/W by Eq. W1)
+// the cell's pressure: the mean of its particles', or with share volume their volume-weighted
+// mean, which the volume-shared flux keeps uniform
+double CellWater::pressure(int m) const
+{
+  const CellSum &s = sums[m];
+  if (s.nfluid == 0) return 0.0;
+  if (settings.share_volume()) return s.volume_pressure / s.fluid_volume;
+  return s.pressure / s.nfluid;
+}
+
+// the share of the cell's flux that fluid particle (mass, rho) takes: 1 / N_f, or V_i / sum V
+double CellWater::share(int m, double mass, double rho) const
+{
+  const CellSum &s = sums[m];
+  return settings.share_volume() ? volume_share(mass, rho, s.fluid_volume) : 1.0 / s.nfluid;
+}
+
+// its pressure and, with the solutes kept, its osmotic potential (dPi/dW = -Pi/W by Eq. W1), as
+// the cell's water changes by dM spread by share()
 double CellWater::potential_stiffness(int m) const
 {
   const CellSum &s = sums[m];
-  double k = s.stiffness / (s.nfluid * s.nfluid);
+  // share volume: dm_i = dM V_i / V raises P_i by dP/drho dM / V (Eq. 9 at fixed V_i); their
+  // volume-weighted mean by sum(dP_i/drho V_i) / V^2
+  double k = settings.share_volume() ? s.volume_stiffness / (s.fluid_volume * s.fluid_volume)
+                                     : s.stiffness / (s.nfluid * s.nfluid);
   if (settings.solute && s.mass > 0.0) k -= pinow[m] / s.mass;
   return k;
 }
@@ -63,15 +84,17 @@ double CellWater::outside_mass_step(int m, const PairCellSPH *sph, int type, dou
                                     double mass, double dt) const
 {
   const CellSum &s = sums[m];
+  const double f = share(m, mass, rho);
   if (settings.external == WaterSettings::EXT_FLUX)
-    return -settings.ext_value * exposed[m] * dt / s.nfluid;
+    return -settings.ext_value * exposed[m] * dt * f;
   if (!(lp[m] > 0.0)) return 0.0;
   const double P = sph->pressure(type, rho);
-  const double k = osmotic_coefficient(exposed[m], lp[m], rho, s.nfluid);
+  // A_c L_p rho / N_f (Eq. 10), or A_c L_p rho V_i / V (Eq. W5)
+  const double k = osmotic_coefficient(exposed[m], lp[m], rho, 1.0 / f);
   double dPdrho = sph->dpressure_drho(type, rho);
-  // kept solutes: the step's uptake dm on each of the N_f particles also raises Pi by
-  // -Pi N_f dm / W (Eq. W1), a stiffness that adds to the pressure's
-  if (settings.solute && s.mass > 0.0) dPdrho -= pinow[m] * s.nfluid / s.mass * mass / rho;
+  // kept solutes: the step's uptake dm = f dW also raises Pi by -Pi dm / (f W) (Eq. W1), a
+  // stiffness that adds to the pressure's
+  if (settings.solute && s.mass > 0.0) dPdrho -= pinow[m] / (f * s.mass) * mass / rho;
   return osmotic_mass_step(k, dt, P, pinow[m] - settings.ext_value, dPdrho, rho, mass);
 }
 

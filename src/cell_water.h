@@ -39,6 +39,11 @@ class CellWater {
   void update(const CellIndex &, const std::vector<GluedPair> &pairs);
   // dpsi/dM of cell m, for the linearised exchange step
   double potential_stiffness(int m) const;
+  // the pressure of cell m that its water potential holds (share particle: the particles' mean;
+  // share volume: their volume-weighted mean)
+  double pressure(int m) const;
+  // the share of cell m's water flux that its fluid particle of this mass and density takes
+  double share(int m, double mass, double rho) const;
   // mass a fluid particle of cell m (of a type, density and mass) takes up from the outside in a
   // step dt
   double outside_mass_step(int m, const LAMMPS_NS::PairCellSPH *, int type, double rho, double mass,

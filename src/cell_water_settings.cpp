@@ -5,6 +5,7 @@
      Pi value | Lp value | cell M Pi value Lp value | cells file
      | solute yes/no | exchange yes/no | external psi value
      | external flux value | exposed outside D | exposed unglued | medium air
+     | share particle/volume
 ------------------------------------------------------------------------- */
 
 #include "cell_water_settings.h"
@@ -158,11 +159,27 @@ int WaterSettings::parse_one(int narg, char **arg)
   if (key == "external") return parse_external(narg, arg);
   if (key == "exposed") return parse_exposed(narg, arg);
   if (key == "medium") return parse_medium(narg, arg);
+  if (key == "share") return parse_share(narg, arg);
   lmp->error->all(FLERR,
                   "Unknown keyword '{}' for fix cell/fluid: expected Pi, Lp, cell, cells, solute, "
-                  "exchange, external, exposed or medium",
+                  "exchange, external, exposed, medium or share",
                   key);
   return 0;
+}
+
+// share particle (Eq. 10 as written: every particle of a cell takes the same share) or share
+// volume (Eq. W5: each in proportion to its volume m/rho, so that a cell whose particles differ in
+// mass keeps one pressure while its water changes)
+int WaterSettings::parse_share(int narg, char **arg)
+{
+  need(narg, 2, "share", "share particle/volume");
+  if (strcmp(arg[1], "particle") == 0)
+    share = SHARE_PARTICLE;
+  else if (strcmp(arg[1], "volume") == 0)
+    share = SHARE_VOLUME;
+  else
+    lmp->error->all(FLERR, "Fix cell/fluid share: expected particle or volume, got '{}'", arg[1]);
+  return 2;
 }
 
 // cell M followed by Pi value and/or Lp value: unset ones stay the fix's own

@@ -26,6 +26,9 @@ class WaterSettings {
  public:
   enum External { EXT_PSI, EXT_FLUX };
   enum Expose { EXPOSE_OUTSIDE, EXPOSE_UNGLUED };
+  // how a cell's water flux is spread over its fluid particles: evenly (Eq. 10 as the paper writes
+  // it, A_c L_p rho / N_f each), or in proportion to each particle's volume m/rho (Eq. W5)
+  enum Share { SHARE_PARTICLE, SHARE_VOLUME };
 
   explicit WaterSettings(LAMMPS_NS::LAMMPS *);
   // one keyword and its arguments; returns how many words it took
@@ -54,6 +57,8 @@ class WaterSettings {
   External external = EXT_PSI;       // exposed walls exchange with psi_ext, or lose a set flux
   double ext_value = 0.0;            // psi_ext or the flux per area
   Expose expose = EXPOSE_OUTSIDE;    // with exchange: neither glued nor faced, or not glued
+  Share share = SHARE_PARTICLE;
+  bool share_volume() const { return share == SHARE_VOLUME; }
   double expose_depth;         // EXPOSE_OUTSIDE: how far in front another wall hides a triangle
   bool depth_given = false;    // exposed outside D given (no default in units lj)
 
@@ -68,6 +73,7 @@ class WaterSettings {
   int parse_external(int narg, char **arg);
   int parse_exposed(int narg, char **arg);
   int parse_medium(int narg, char **arg);
+  int parse_share(int narg, char **arg);
   void need(int narg, int n, const std::string &key, const char *form) const;
 };
 

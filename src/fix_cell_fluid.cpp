@@ -58,7 +58,9 @@
 #include "respa.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cstring>
+#include <limits>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -147,6 +149,7 @@ void FixCellFluid::init()
   CellMech::require_unit_consistency(lmp, "Fix cell/fluid");
   find_styles();
   warn_unheld_protoplasm();
+  warn_uneven_share();
   check_respa();
   // exposed outside looks for other cells' walls up to its distance from a triangle
   if (settings.exposed_outside() && settings.active()) widen_ghost_cutoff();
@@ -207,6 +210,37 @@ void FixCellFluid::warn_unheld_protoplasm()
                  "(pair_coeff ... cell/virtual ... adhere Fa delta) the protoplasm leaves the wall "
                  "into vacuum and clumps (docs/Howto_tissue.rst, drying)",
                  id, settings.ext_value, Pi0);
+}
+
+// With share particle (Eq. 10 as written) every particle of a cell takes the same mass, so where
+// their masses differ (an inflation spreads them 88-1031 pg in a coarse block) a continuous loss
+// to the outside dries the light ones first: they go into a tension that the wall contact holds,
+// which no cell of one pressure would have (docs/studies/drying-cell.md). Collective.
+void FixCellFluid::warn_uneven_share()
+{
+  // the outside draws water: a set flux, or air below pure water's potential
+  const bool drying = settings.external_flux() ||
+      (settings.external == CellMech::WaterSettings::EXT_PSI && settings.ext_value < 0.0 &&
+       settings.active());
+  if (warned_share || settings.share_volume() || !drying) return;
+  double lo = std::numeric_limits<double>::max(), hi = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || !sph->is_fluid(atom->type[i])) continue;
+    lo = std::min(lo, atom->rmass[i]);
+    hi = std::max(hi, atom->rmass[i]);
+  }
+  double glo, ghi;
+  MPI_Allreduce(&lo, &glo, 1, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(&hi, &ghi, 1, MPI_DOUBLE, MPI_MAX, world);
+  warned_share = true;
+  if (comm->me != 0 || !(ghi > 2.0 * glo)) return;
+  error->warning(
+      FLERR,
+      "Fix cell/fluid {}: the fluid particles' masses differ by a factor {:.3g}, and with "
+      "share particle (the default) each takes the same share of its cell's water flux "
+      "to the outside, so the light ones dry first and hold a tension; share volume "
+      "spreads it by volume and keeps one pressure per cell (docs/fix_cell_fluid.rst)",
+      id, ghi / glo);
 }
 
 void FixCellFluid::check_respa()
@@ -423,7 +457,7 @@ void FixCellFluid::advance_fluid(bool osmosis, const std::vector<double> &uptake
     // its fluid, inside or escaped, no longer exchanges water osmotically
     if (osmosis && m >= 1 && sums[m].nfluid > 0 && sums[m].broken == 0.0) {
       dm = water.outside_mass_step(m, sph, type[i], rho[i], rmass[i], dt);
-      dm += uptake[m] / sums[m].nfluid;
+      dm += uptake[m] * water.share(m, rmass[i], rho[i]);
       if (rmass[i] + dm <= 0.0)
         error->one(FLERR,
                    "Fix cell/fluid {}: fluid particle {} of cell {} would lose all its mass "

@@ -92,10 +92,12 @@ class FixCellFluid : public Fix {
   int iref, ialam;                   // d2_cellref and d_alam
   std::vector<double> node_glued;    // per local and ghost atom: its intact lamella bonds
   bool warned_unheld = false;        // warn_unheld_protoplasm said it (once per fix)
+  bool warned_share = false;         // warn_uneven_share said it (once per fix)
 
   void parse_command(int, char **);
   void find_styles();
   void warn_unheld_protoplasm();
+  void warn_uneven_share();
   void check_respa();
   void widen_ghost_cutoff();
   void check_group();

@@ -16,6 +16,10 @@ cells (cellgen.py tissue 1x1x2, level 3, 440 fluid particles each), short runs.
    (as compute cell/props measures it) is not exposed, without exchange the whole wall is (the
    default, exposed outside, in test_tissue_water.py).
 5. Bad inputs end with a clear error naming the keyword.
+6. share volume (Eq. W5): a cell's flux to the outside spread over its particles by their volumes
+   m/rho, so that each loses the same share of its own volume (to round-off) where share particle
+   (Eq. 10 as written) takes the same mass from each; the cell loses the same in total; share
+   particle warns, once, where the particles' masses differ and the outside draws water.
 """
 import json
 import os
@@ -255,6 +259,52 @@ def test_drying(two):
             abs(ratio - y["E1"][0] / y["A1"][0]) < 0.01, f"loss ratio {ratio:.4f}")
 
 
+SHARE = """
+# masses spread as an inflation spreads them (88-1031 pg in a coarse block), densities too
+variable        mm atom 100.0+60.0*(id%11)
+variable        rr atom 1.0+0.002*(id%5)
+set             group fluid mass v_mm
+set             group fluid d_rho v_rr
+run             0
+write_dump      fluid custom before.dump id mol mass d_rho modify sort id format float %.17g
+run             1
+write_dump      fluid custom after.dump id mol mass modify sort id format float %.17g
+"""
+
+
+def test_share_volume(two):
+    """Eq. W5: with share volume each particle of a cell loses the same share of its volume
+    m/rho; with share particle the same mass. A set flux q loses q dt E per cell either way."""
+    d, special = two
+    q = 2e-4
+    for share in ("volume", "particle"):
+        rc, log = T.lmp(script(special, f"external flux {q} share {share}", 1, 1, "share.dat", run=SHARE),
+                        cwd=d, check=False, log=f"log.share-{share}", variables=dict(COARSE, dir=T.INPUTS))
+        T.check(f"share {share}: runs", rc == 0)
+        b = np.loadtxt(os.path.join(d, "before.dump"), skiprows=9)
+        a = np.loadtxt(os.path.join(d, "after.dump"), skiprows=9)
+        dm = a[:, 2] - b[:, 2]
+        V = b[:, 2] / b[:, 3]
+        E = T.load(os.path.join(d, "share.dat.exposed"))
+        warned = sum("masses differ by a factor" in ln for ln in log.splitlines())
+        for c in (1, 2):
+            k = b[:, 1] == c
+            per = dm[k] / V[k] if share == "volume" else dm[k]
+            # dm (about 2e-6 pg) is the difference of two masses of up to 760 pg, which keeps their
+            # round-off, ulp(760) / dm = 5e-8 at most; the other share misses by V's spread, 0.47
+            spread = per.std() / abs(per.mean())
+            loss = -dm[k].sum() / (q * 0.001 * E[-1, c])
+            print(f"share {share}, cell {c}: dm/{'V' if share == 'volume' else '1'} spread {spread:.2e}, "
+                  f"V spread {V[k].std() / V[k].mean():.2f}, loss / (q dt E) {loss:.12f}; warnings {warned}")
+            T.check(f"share {share}, cell {c}: each particle loses the same "
+                    + ("share of its volume" if share == "volume" else "mass") + " (1e-7)", spread < 1e-7,
+                    f"{spread:.1e}")
+            T.check(f"share {share}, cell {c}: the cell loses q dt E (1e-7)", abs(loss - 1) < 1e-7,
+                    f"{loss - 1:.1e}")
+        T.check(f"share {share}: warned about the uneven share " + ("once" if share == "particle" else "never"),
+                warned == (1 if share == "particle" else 0), f"{warned}")
+
+
 BAD = [
     ("cell 0 Pi -100", "must be >= 1"),
     ("cell 2 Pi 50", "must be <= 0"),
@@ -271,6 +321,8 @@ BAD = [
     ("colour red", "Unknown keyword 'colour'"),
     ("medium solution", "medium solution is not modelled"),
     ("medium water", "keyword 'medium' expects 'air'"),
+    ("share", "needs 1 argument(s)"),
+    ("share mass", "share: expected particle or volume, got 'mass'"),
 ]
 
 

@@ -35,6 +35,15 @@ inline double series_conductivity(double Lp_a, double Lp_b)
   return (Lp_a > 0.0 && Lp_b > 0.0) ? Lp_a * Lp_b / (Lp_a + Lp_b) : 0.0;
 }
 
+// Share of a cell's water flux that its fluid particle of mass m and density rho takes (Eq. W5):
+// its volume m / rho over the cell's fluid volume Vf = sum m_j / rho_j. A cell's mass change dM
+// then changes every particle's density by the same (rho / m) dm = dM / Vf (Eq. 9 at fixed
+// volume), so a cell of one pressure keeps one, whatever its particles' masses.
+inline double volume_share(double m, double rho, double Vf)
+{
+  return m / rho / Vf;
+}
+
 // Mass that cell a gives cell b in one step dt (Eq. W3): dM_b/dt = -dM_a/dt = k (psi_a - psi_b),
 // k = A_ab Lp_ab rho, psi = P + Pi the water potentials, linearised in the step's own effect on
 // them as osmotic_mass_step is (dpsi/dM of each cell, > 0: a cell's potential rises as it gains

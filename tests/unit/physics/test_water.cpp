@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Water in a tissue (Eqs. W1-W4) of the cell model, checked without LAMMPS (src/physics/water.h).
+// Water in a tissue (Eqs. W1-W5) of the cell model, checked without LAMMPS (src/physics/water.h).
 #include "physics/water.h"
 
 #include <gtest/gtest.h>
@@ -21,6 +21,27 @@ TEST(Water, SoluteKeepsPiTimesWater)
   }
   EXPECT_EQ(solute_osmotic_potential(Pi0, W0, W0), Pi0);
   EXPECT_EQ(solute_osmotic_potential(Pi0, W0, 0.5 * W0), 2.0 * Pi0);
+}
+
+TEST(Water, VolumeShareChangesEveryDensityAlike)
+{
+  // Eq. W5: four particles of a cell whose masses differ 10-fold (an inflated cell's spread)
+  const double m[4] = {88.0, 250.0, 600.0, 1031.0}, rho[4] = {1.001, 0.999, 1.0, 1.002};
+  double Vf = 0.0;
+  for (int i = 0; i < 4; i++) Vf += m[i] / rho[i];
+  const double dM = -3.7;    // pg: the cell's loss this step
+  double sum = 0.0;
+  for (int i = 0; i < 4; i++) {
+    const double f = volume_share(m[i], rho[i], Vf);
+    const double drho = rho[i] / m[i] * f * dM;    // Eq. 9 at fixed volume
+    std::printf("m = %6.0f pg: share %.6f, drho = %.15f (dM / Vf = %.15f)\n", m[i], f, drho,
+                dM / Vf);
+    EXPECT_NEAR(drho, dM / Vf, 1e-15);
+    sum += f;
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-15);    // the cell loses dM, all of it
+  // equal particles: the even share of Eq. 10
+  EXPECT_NEAR(volume_share(500.0, 1.0, 4 * 500.0), 0.25, 1e-16);
 }
 
 TEST(Water, SeriesConductivityOfTwoWalls)
