@@ -20,11 +20,14 @@
 #      (in.water-pair); a 2x2x2 block dried to 20% of its water through its exposed faces
 #      (in.tissue-dry), and a short leg at half the conductivity (the quasi-static check); the same
 #      block with the membrane wall in tension-field theory and its fluid held on its walls
-#      (adhesion and artificial stress, params.LEVELS), dried at a quarter of the conductivity and,
-#      as its rate check, at four times that, once more with the weak lamella.
+#      (adhesion, artificial stress, cohesion, residual stiffness: params.LEVELS), dried at half the
+#      conductivity and, as its rate check, at the conductivity above (whose dried state is then
+#      rehydrated in pure water), once more with the weak lamella; the 27-cell block held, dried
+#      and rehydrated.
 #      ONLY="gen inflate-pair water-potential water-pair water-inflate water-dry water-dry-slow
-#      water-inflate-hold water-dry-hold water-dry-hold-fast water-dry-hold-weak report-water" runs
-#      these alone (about ten minutes);
+#      water-inflate-hold water-dry-hold water-dry-hold-fast water-dry-hold-weak
+#      water-inflate-hold-27 water-dry-hold-27 water-back-hold water-back-hold-27 report-water" runs these alone
+#      (about an hour on 2 cores);
 #      report-water writes only the report's
 #      "Water" section into an existing tissue.md (and its key in the summary).
 #   RES=coarse bash tools/tissue.sh   # level-3 walls (642 nodes), 27-cell block (default; ~20 min on 2 cores)
@@ -89,7 +92,8 @@ stage() {
   if [ "${RESUME:-0}" = 1 ] && grep -q "^$name .* ok$" "$out/times.txt" 2>/dev/null; then return 0; fi
   local t0 rc=0; t0=$(date +%s)
   echo "$(date -u +%H:%M:%S) $name ..."
-  mkdir -p "$out/$name"
+  # a stage run again starts empty: no frame of an earlier run stays among its own
+  rm -rf "${out:?}/$name" && mkdir -p "$out/$name"
   (cd "$out/$name" && "$@") || rc=$?
   local st=ok; [ $rc -eq 0 ] || st="failed(rc=$rc)"
   echo "$name $(( $(date +%s) - t0 )) $st" >> "$out/times.txt"
@@ -209,17 +213,31 @@ waterdry() {  # LP TARGET VTK
 read -r FA3 DELTA3 DP3 COH3 RES3 < <(level_params 3 fa delta dp coh residual)
 hold=(-var wall membrane -var wrinkle yes -var residual $RES3 -var Fa $FA3 -var delta $DELTA3
       -var sphstress 0.2 -var dp $DP3 -var sphcoh $COH3)
-waterinflhold() {
-  read -r r k < "$out/water-inflate/reach-special.txt"
-  lmp -in "$INPUTS/in.tissue-inflate" -screen none "${hold[@]}" $(model "$r") \
-    -var data "$out/water-inflate/dry.data" -var special "$k" -var Pi -364 -var nsteps $NINFL \
-    -var every 500 -var restart_out dry.restart
+waterinflhold() {  # [BLOCK]: the 2x2x2 block's data (water-inflate), or a new block of BLOCK cells
+  if [ -n "${1:-}" ]; then
+    gen dry "$1"
+    $py -c "import json; s = json.load(open('dry.json'))
+print(max($REACH3, s['triangle_quality']['recommended_reach']), s['extra_special_per_atom'])" > reach-special.txt
+  else cp "$out/water-inflate/dry.data" "$out/water-inflate/reach-special.txt" .; fi
+  read -r r k < reach-special.txt
+  lmp -in "$INPUTS/in.tissue-inflate" -screen none "${hold[@]}" $(model "$r") -var data dry.data \
+    -var special "$k" -var Pi -364 -var nsteps $NINFL -var every 500 -var restart_out dry.restart
 }
-waterdryhold() {  # LP TARGET VTK [-var NAME VALUE ...]
-  read -r r k < "$out/water-inflate/reach-special.txt"
-  lmp -in "$INPUTS/in.tissue-dry" -screen none "${hold[@]}" "${@:4}" $(model "$r") -var special "$k" \
-    -var Pi -364 -var restart "$out/water-inflate-hold/dry.restart" -var Lp "$1" -var target "$2" \
-    -var every 2000 -var vtk "$3" -var nmax 400000
+waterdryhold() {  # FROM LP TARGET VTK [-var NAME VALUE ...]: FROM's inflated (dry.restart) block
+  read -r r k < "$out/$1/reach-special.txt"
+  lmp -in "$INPUTS/in.tissue-dry" -screen none "${hold[@]}" "${@:5}" $(model "$r") -var special "$k" \
+    -var Pi -364 -var restart "$out/$1/dry.restart" -var Lp "$2" -var target "$3" \
+    -var every 2000 -var vtk "$4" -var nmax 400000
+}
+# rehydration: a dried block (FROM's tissue-dry.restart) back in pure water (psi 0) until it holds 98% of
+# its turgid water (the fraction of FROM's starting water) or nmax steps
+waterback() {  # FROM DRIED LP VTK
+  read -r r k < "$out/$1/reach-special.txt"
+  local w0; w0=$($py -c "import csv; r = next(csv.DictReader(open('$out/$2/tissue-dry.csv')))
+print(float(r['water_pg']) / float(r['water_fraction']))")
+  lmp -in "$INPUTS/in.tissue-dry" -screen none "${hold[@]}" $(model "$r") -var special "$k" \
+    -var Pi -364 -var restart "$out/$2/tissue-dry.restart" -var Lp "$3" -var psi 0 -var back 1 \
+    -var W0 "$w0" -var target 0.98 -var every 2000 -var vtk "$4" -var nmax 150000
 }
 bg water-potential waterpot
 bg water-pair waterpair
@@ -227,10 +245,18 @@ stage water-inflate waterinfl
 stage water-inflate-hold waterinflhold
 bg water-dry waterdry 2.0e-4 0.2 6000
 bg water-dry-slow waterdry 1.0e-4 0.7 0
-bg water-dry-hold waterdryhold 5.0e-5 0.2 20000
-bg water-dry-hold-fast waterdryhold 2.0e-4 0.2 0   # its rate check: 4x the conductivity
+bg water-dry-hold waterdryhold water-inflate-hold 1.0e-4 0.2 20000
+# its rate check, twice the conductivity; its last state is rehydrated
+bg water-dry-hold-fast waterdryhold water-inflate-hold 2.0e-4 0.2 0 -var save 1
 # does the lamella hold the cells against their fluid? the same, weak from the drying's start
-bg water-dry-hold-weak waterdryhold 2.0e-4 0.2 0 -var sigl ${SIGL[weak]} -var Gl ${GL[weak]}
+bg water-dry-hold-weak waterdryhold water-inflate-hold 2.0e-4 0.2 0 -var sigl ${SIGL[weak]} -var Gl ${GL[weak]}
+# the 27-cell block, at the rate-checked 2e-4
+stage water-inflate-hold-27 waterinflhold "3 3 3"
+bg water-dry-hold-27 waterdryhold water-inflate-hold-27 2.0e-4 0.2 25000 -var save 1
+wait
+bg water-back-hold waterback water-inflate-hold water-dry-hold-fast 2.0e-4 25000
+bg water-back-hold-27 waterback water-inflate-hold-27 water-dry-hold-27 2.0e-4 25000
+wait
 wait
 
 [ $reports_only = 1 ] || echo "# ${ONLY:+ONLY=\"$ONLY\": }finished $(date -u '+%Y-%m-%d %H:%M:%S UTC')" >> run-info.txt

@@ -131,9 +131,18 @@ def water_words(rep):
     h = W.get("dry_hold")
     if not h:
         return out + "."
-    return (out + "; with its fluid held on walls that take no compression it shrank with its water, the enclosed "
+    out += ("; with its fluid held on walls that take no compression it shrank with its water, the enclosed "
             "volume " + bvh_words(h["bvh_gap"]) + f" (the run ends at {h['end_fraction']:.0%}"
-            + (", stopped on an error" if h["stop"] else "") + "; coarse cells, not converged in resolution).")
+            + (", stopped on an error" if h["stop"] else "") + "; coarse cells, not converged in resolution)")
+    h27 = W.get("dry_hold_27")
+    if h27:
+        out += (f"; the 27-cell block likewise {bvh_words(h27['bvh_gap'])} (to {h27['end_fraction']:.0%})")
+    back = W.get("rehydrate") or {}
+    if back:
+        out += ("; back in pure water " + ", ".join(
+            f"the {k} block took back {q['end_fraction']:.0%} of its water and {q['turgor_kPa']:.0f} kPa of turgor"
+            for k, q in back.items()))
+    return out + "."
 
 
 def stage_words(rep):

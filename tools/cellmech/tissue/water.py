@@ -176,8 +176,8 @@ def section_text(rows):
             f"falls less than the Feret diameter (apple: perimeter / Feret {ratio:.2f} of the fresh ratio; "
             f"model: {(last['perimeter'] / first['perimeter']) / (last['feret'] / first['feret']):.2f}): the wall "
             "keeps more length than a convex outline of the same size would, warped in the apple, crumpled here. "
-            "A matched comparison needs the published curves against moisture and this block dried further than "
-            "its crushed triangle allows.", ""]
+            "A matched comparison needs the published curves against moisture (only the paper's abstract was "
+            "read here).", ""]
 
 
 def potential(rep, S):
@@ -308,14 +308,14 @@ def read_vtk_cells(path):
     return np.array([int(v) for v in " ".join(lines[i + 2:i + 2 + n]).split()[:n]])
 
 
-def render(rep, d, S, name="water-dry"):
+def render(rep, d, S, name="water-dry", what="the 2x2x2 block"):
     """Walls (VTK, the lower layer's cells cut at mid-height of the block) and the fluid particles
     in a slice, at a few water contents: NAME-walls.png of stage NAME."""
     frames = sorted(glob.glob(rep.p(f"{name}/dry-walls.*.vtk")), key=lambda f: int(f.split(".")[-2]))
     if not frames:
         return None
     steps = np.array([int(f.split(".")[-2]) for f in frames])
-    wsteps = np.rint(d["time_us"] / 0.001).astype(int)
+    wsteps = np.rint(d["time_us"] / params.run_settings(rep.p(name), "in.tissue-dry")["dt"]).astype(int)
     frac = np.interp(steps, wsteps, d["water_fraction"])
     pick = []
     for f in FRACTIONS:
@@ -350,7 +350,7 @@ def render(rep, d, S, name="water-dry"):
         ax2.set_aspect("equal")
         ax2.set_xticks([]); ax2.set_yticks([])
         ax2.set_title("slice: wall nodes (2 um), fluid by cell (8 um)", fontsize=8)
-    fig.suptitle("in.tissue-dry: the 2x2x2 block (top) and a slice through its first cell layer (bottom)", fontsize=10)
+    fig.suptitle(f"in.tissue-dry: {what} (top) and a slice through its first cell layer (bottom)", fontsize=10)
     fig.tight_layout()
     fig.savefig(rep.fig(f"{name}-walls.png"), dpi=90)
     plt.close(fig)
@@ -478,14 +478,14 @@ def dry_measure(d, slow):
     return q
 
 
-def rate_rows(fast, slow):
-    """Two runs of one drying at two conductivities, at the water contents both reach (95% to 70%):
-    mean turgor and enclosed volume (/ the faster run's first) of each."""
+def rate_rows(fast, slow, fractions=(0.95, 0.9, 0.85, 0.8, 0.75, 0.7)):
+    """Two runs of one drying at two conductivities, at the water contents both reach (of
+    fractions): mean turgor and enclosed volume (/ the faster run's first) of each."""
     end = max(float(slow["water_fraction"][-1]), float(fast["water_fraction"][-1])) - 1e-3
     V0 = fast["volume_um3"][0]
     return {str(round(f, 3)): dict(turgor_fast=at(fast, f, "turgor_mean_kPa"), turgor_slow=at(slow, f, "turgor_mean_kPa"),
                                    volume_fast=at(fast, f, "volume_um3") / V0, volume_slow=at(slow, f, "volume_um3") / V0)
-            for f in (0.95, 0.9, 0.85, 0.8, 0.75, 0.7) if f >= end}
+            for f in fractions if f >= end}
 
 
 def dry(rep, S):
@@ -590,23 +590,29 @@ def dry_hold(rep, S):
     q = dry_measure(d, None)
     q["stop"] = stop_reason(rep.p(f"{name}/log.lammps"))
     q["settings"] = {k: e[k] for k in ("Fa", "delta", "sphstress", "dp", "Lp", "psi", "wall", "wrinkle")}
+    q["settings"]["share"] = e.get("share", "particle")
     q["settings"]["sphcoh"] = e.get("sphcoh", 0.0)
     q["settings"]["residual"] = e.get("residual", 0.0)
-    x = d["water_fraction"]
-    # Boyle-van 't Hoff with a slack wall: the enclosed volume follows the water, V/V0 = W/W0
-    # times the turgid fluid's density over the rest density (Tait), as in the drying-cell study
-    tab = params.table()
-    B = tab["rho0"] * tab["c"] ** 2 / 7.0
-    bvh = x * (1 + d["turgor_mean_kPa"][0] / B) ** (1 / 7)
-    gap = d["volume_um3"] / d["volume_um3"][0] / bvh - 1
-    q["bvh_gap"] = {str(f): float(np.interp(f, x[::-1], gap[::-1])) for f in (0.9, 0.8, 0.7, 0.6, 0.4, 0.2)
-                    if f >= x[-1] - 1e-3}
+    q["bvh_gap"] = bvh_gap(d)
     q["rate"] = hold_rate_check(rep, d, name + "-fast")
     q["weak"] = hold_weak_check(rep, name + "-fast", name + "-weak")
     rows = section_rows(rep, name, d)
     q["sections"] = {f"{w:.4f}": v for w, v in rows.items()}
     S["dry_hold"] = q
     dry_hold_text(rep, q, d, pic, name, S.get("dry", {}), rows)
+
+
+def bvh_gap(d, fractions=(0.9, 0.8, 0.7, 0.6, 0.4, 0.2)):
+    """{fraction: enclosed volume / Boyle-van 't Hoff's - 1} at the water contents a drying record
+    d reaches. Boyle-van 't Hoff with a slack wall: the enclosed volume follows the water, V/V0 =
+    W/W0 times the turgid fluid's density over the rest density (Tait), as in the drying-cell study."""
+    x = d["water_fraction"]
+    tab = params.table()
+    B = tab["rho0"] * tab["c"] ** 2 / 7.0
+    bvh = x * (1 + d["turgor_mean_kPa"][0] / B) ** (1 / 7)
+    gap = d["volume_um3"] / d["volume_um3"][0] / bvh - 1
+    o = np.argsort(x)
+    return {str(f): float(np.interp(f, x[o], gap[o])) for f in fractions if f >= x.min() - 1e-3}
 
 
 def hold_rate_check(rep, d, fast):
@@ -617,7 +623,7 @@ def hold_rate_check(rep, d, fast):
     f_ = read_csv(rep.p(f"{fast}/tissue-dry.csv"))
     e = params.run_settings(rep.p(fast), "in.tissue-dry")
     return dict(Lp=e["Lp"], end_fraction=float(f_["water_fraction"][-1]), stop=stop_reason(rep.p(f"{fast}/log.lammps")),
-                rows=rate_rows(f_, d))
+                rows=rate_rows(f_, d, (0.95, 0.9, 0.8, 0.7, 0.6, 0.4, 0.3, 0.2)))
 
 
 def hold_weak_check(rep, fast, weak):
@@ -687,21 +693,26 @@ def dry_hold_text(rep, q, d, pic, name, plain, sections):
           + bvh_words(q["bvh_gap"]) + f" (the run ends at {q['end_fraction']:.0%}), and the block with "
           f"it (size {q['size_at'].get('0.8', float('nan')):.4f} of its turgid size at 80% water, against "
           f"{plain.get('size_at', {}).get('0.8', float('nan')):.4f} in section 3); the outer walls crumple (pictures). "
-          "Unlike the single cell of the study, which follows at zero pressure, the block's fluid reads a growing "
-          f"tension (mean turgor down to {q['turgor_min_kPa']:.4g} kPa), although its walls are compressed (they carry "
-          "nothing in tension-field theory). " + hold_weak_text(q.get("weak")) + " Nor is it the block's: a single "
-          "coarse cell dried the same way, continuously against -3000 kPa, reads the same tension at equal water, at "
-          "either conductivity, where dried in settled levels it reads zero pressure (docs/studies/drying-cell.md, "
-          "\"Continuous drying\"); why is open. From 80% water on the enclosed volume falls below Boyle-van 't Hoff's: "
-          "the fluid's particle volumes (m/rho) reach past the enclosed volume by a share that grows as the cells "
-          "shrink (measured on that single cell in the study), so the enclosed volume tells the fluid's to a few % "
-          "only. " + crush_text(q, e) + " "
+          + share_text(q, e) + " " + hold_weak_text(q.get("weak")) + " " + crush_text(q, e) + " "
           + ("Coarse cells only (level 3): with the cohesion the single cell follows the water at level 4 too "
              "(docs/studies/drying-cell.md), but the block has not been run there, so this is not a converged result. "
              if e["sphcoh"] else "Coarse cells only: at level 4 the drying cell's protoplasm tears inside "
              "(docs/studies/drying-cell.md), so this is not a converged result. ")
           + f"Broken walls {q['broken']}, debonded lamella bonds {q['debonded']}.", "",
           f"Data: [{name}.csv]({rep.link(name + '.csv')}).", "")
+
+
+def share_text(q, e):
+    """The fluid's tension, and how each cell's flux was spread over its particles."""
+    t = f"The fluid's mean turgor (the mean of its particles') reaches {q['turgor_min_kPa']:.4g} kPa"
+    if e.get("share") == "volume":
+        return (t + " with each cell's flux spread over its particles by volume (`share volume`, Eq. W5): every "
+                "particle's density changes alike. With the even share of Eq. 10 as written the light particles "
+                "of the contact layer dry first and hold a tension of hundreds of kPa that no slack wall could "
+                "(docs/studies/drying-cell.md, \"Continuous drying\"), and the enclosed volume falls behind.")
+    return (t + " with the even share of Eq. 10 (`share particle`): the light particles of the contact layer dry "
+            "first and the wall contact holds their tension (docs/studies/drying-cell.md, \"Continuous drying\"); "
+            "`share volume` (Eq. W5) keeps one pressure per cell.")
 
 
 def bvh_band(gap, band=0.05):
@@ -740,14 +751,14 @@ def crush_text(q, e):
 def hold_rate_text(r, e):
     """The rate check's sentence and table (lines for rep.w)."""
     if r is None:
-        return ["*Rate.* The check at 4x the conductivity (stage water-dry-hold-fast) has not run.", ""]
+        return ["*Rate.* The check at a higher conductivity (stage water-dry-hold-fast) has not run.", ""]
     dv, dp = spread(r["rows"])
     stop = " (stopped by an error)" if r["stop"] else ""
     big = max(abs(v["turgor_slow"]) for v in r["rows"].values())
     # a tenth of the tension: the levels' scatter and the drag's share are below it
     verdict = ("the tension is the water content's, not the rate's." if dp < 0.1 * big else
                f"the rate changes the tension by more than a tenth of it ({big:.3g} kPa): it is partly the rate's.")
-    return [f"*Rate.* The same drying at 4x the conductivity (Lp {r['Lp']}, to {r['end_fraction']:.0%} water{stop}) "
+    return [f"*Rate.* The same drying at {r['Lp'] / e['Lp']:.3g}x the conductivity (Lp {r['Lp']}, to {r['end_fraction']:.0%} water{stop}) "
             f"gives the same enclosed volume to {100 * dv:.2g}% of full turgor's and the same mean turgor to "
             f"{dp:.3g} kPa at equal water: " + verdict, "",
             "| water | turgor Lp " + f"{e['Lp']:g}" + " (kPa) | turgor Lp " + f"{r['Lp']:g}" + " (kPa) | volume Lp "
@@ -769,10 +780,13 @@ def section(rep):
           "wall neither glued to another cell nor facing one within 10 um, `exposed outside`); "
           "see docs/fix_cell_fluid.rst and docs/Howto_tissue.rst. Made by tools/tissue.sh's water stages "
           "(`ONLY=\"gen inflate-pair water-potential water-pair water-inflate water-dry water-dry-slow "
-          "report-water\"` runs them alone and writes this section only); wall times, one core per run: "
+          "water-inflate-hold water-dry-hold water-dry-hold-fast water-dry-hold-weak water-inflate-hold-27 "
+          "water-dry-hold-27 water-back-hold water-back-hold-27 report-water\"` runs them alone and writes this section only); wall "
+          "times, one core per run: "
           + ", ".join(f"{k} {v[0]} s" for k, v in rep.times.items() if k.startswith("water") or k == "inflate-pair")
           + ".", "")
-    for part in (potential, pair, dry, dry_hold):
+    from . import waterblock
+    for part in (potential, pair, dry, dry_hold, waterblock.dry_hold_27, waterblock.rehydrate):
         try:
             part(rep, S)
         except Exception as e:  # report what is there
