@@ -319,3 +319,32 @@ run 0
     T.check("10: ... and still writes the shape (gyration tensor) of both walls",
             all(r.shape == (2, 6) and (r[:, :3] > 0).all() for r in cells.values()),
             str({s: r.shape for s, r in cells.items()}))
+
+
+def test_dry_saves_and_rehydrates(data):
+    """in.tissue-dry -var save 1 writes the last state, and -var back 1 -var psi 0 -var W0 W
+    continues it in pure water: the water comes back, its fraction of W (the turgid water), and
+    the halt looks the other way (a rehydration stops as the fraction rises to target)."""
+    d, special = data
+    T.lmp(os.path.join(T.INPUTS, "in.tissue-inflate"), cwd=d, log="log.inflate-back", variables=dict(
+        COARSE, dir=T.INPUTS, data="two.data", special=special, nsteps=20, nsettle=10, every=10,
+        restart_out="back.restart"))
+    T.lmp(os.path.join(T.INPUTS, "in.tissue-dry"), cwd=d, log="log.dry-back", variables=dict(
+        COARSE, dir=T.INPUTS, restart="back.restart", nmax=40, every=10, save=1, out="dry-back.csv"))
+    dry = np.genfromtxt(os.path.join(d, "dry-back.csv"), delimiter=",", names=True)
+    W0 = dry["water_pg"][0]
+    T.check("dry: save 1 writes tissue-dry.restart and its lengths' file",
+            all(os.path.exists(os.path.join(d, f)) for f in ("tissue-dry.restart", "tissue-dry.restart.lmp")))
+    for target, steps in ((2.0, 40), (0.5, 10)):
+        T.lmp(os.path.join(T.INPUTS, "in.tissue-dry"), cwd=d, log="log.back", variables=dict(
+            COARSE, dir=T.INPUTS, restart="tissue-dry.restart", nmax=40, every=10, back=1, psi=0.0,
+            W0=f"{W0:.17g}", target=target, out="back.csv"))
+        b = np.genfromtxt(os.path.join(d, "back.csv"), delimiter=",", names=True)
+        print(f"target {target}: dried to {dry['water_fraction'][-1]:.10f}, back from {b['water_fraction'][0]:.10f} "
+              f"to {b['water_fraction'][-1]:.10f} in {b['time_us'][-1] / 0.001:.0f} steps")
+        T.check(f"back (target {target}): starts where the drying ended, as a fraction of W0 (1e-12)",
+                abs(b["water_fraction"][0] / dry["water_fraction"][-1] - 1) < 1e-12)
+        T.check(f"back (target {target}): stops after {steps} steps",
+                abs(b["time_us"][-1] / 0.001 - steps) < 1e-6)
+        if target > 1:
+            T.check("back: in pure water the water comes back", np.all(np.diff(b["water_pg"]) > 0))

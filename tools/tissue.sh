@@ -229,15 +229,15 @@ waterdryhold() {  # FROM LP TARGET VTK [-var NAME VALUE ...]: FROM's inflated (d
     -var Pi -364 -var restart "$out/$1/dry.restart" -var Lp "$2" -var target "$3" \
     -var every 2000 -var vtk "$4" -var nmax 400000
 }
-# rehydration: a dried block (FROM's tissue-dry.restart) back in pure water (psi 0) until it holds 98% of
-# its turgid water (the fraction of FROM's starting water) or nmax steps
-waterback() {  # FROM DRIED LP VTK
+# rehydration: a dried block (DRIED's tissue-dry.restart) back in pure water (psi 0) until it holds 98%
+# of its turgid water (the fraction of DRIED's starting water) or NMAX steps
+waterback() {  # FROM DRIED LP VTK NMAX
   read -r r k < "$out/$1/reach-special.txt"
   local w0; w0=$($py -c "import csv; r = next(csv.DictReader(open('$out/$2/tissue-dry.csv')))
 print(float(r['water_pg']) / float(r['water_fraction']))")
   lmp -in "$INPUTS/in.tissue-dry" -screen none "${hold[@]}" $(model "$r") -var special "$k" \
     -var Pi -364 -var restart "$out/$2/tissue-dry.restart" -var Lp "$3" -var psi 0 -var back 1 \
-    -var W0 "$w0" -var target 0.98 -var every 2000 -var vtk "$4" -var nmax 150000
+    -var W0 "$w0" -var target 0.98 -var every 2000 -var vtk "$4" -var nmax "$5"
 }
 bg water-potential waterpot
 bg water-pair waterpair
@@ -254,8 +254,8 @@ bg water-dry-hold-weak waterdryhold water-inflate-hold 2.0e-4 0.2 0 -var sigl ${
 stage water-inflate-hold-27 waterinflhold "3 3 3"
 bg water-dry-hold-27 waterdryhold water-inflate-hold-27 2.0e-4 0.2 25000 -var save 1
 wait
-bg water-back-hold waterback water-inflate-hold water-dry-hold-fast 2.0e-4 25000
-bg water-back-hold-27 waterback water-inflate-hold-27 water-dry-hold-27 2.0e-4 25000
+bg water-back-hold waterback water-inflate-hold water-dry-hold-fast 2.0e-4 25000 150000
+bg water-back-hold-27 waterback water-inflate-hold-27 water-dry-hold-27 2.0e-4 20000 80000
 wait
 wait
 

@@ -92,3 +92,44 @@ def test_plane_section_sphere_and_ellipsoid():
     area, *_ = water.plane_section(pts, tri, np.array([0.0, 5.0, -3.0]), np.array([1.0, 0.0, 0.0]))
     print("circle about an off-centre point: area / pi R^2", area / (math.pi * R * R))
     assert abs(area / (math.pi * R * R) - 1) < 0.01
+
+
+def test_bvh_gap_zero_when_volume_follows_water():
+    """Boyle-van 't Hoff with a slack wall: turgid at the start (V0, turgor P0), then at zero
+    pressure, the fluid at its rest density: V/V0 = W/W0 rho(P0)/rho(0) has no gap; 10% less volume
+    is -10% at every water content."""
+    x = np.linspace(1.0, 0.2, 41)
+    B = water.params.table()["rho0"] * water.params.table()["c"] ** 2 / 7.0
+    P0 = 364.0
+    d = dict(water_fraction=x, turgor_mean_kPa=np.full_like(x, P0),
+             volume_um3=np.where(x < 1.0, 1e5 * x * (1 + P0 / B) ** (1 / 7), 1e5))
+    gap = water.bvh_gap(d)
+    print(gap)
+    assert set(gap) == {"0.9", "0.8", "0.7", "0.6", "0.4", "0.2"}
+    assert max(abs(v) for v in gap.values()) < 1e-12
+    d["volume_um3"] = d["volume_um3"] * np.where(x < 1.0, 0.9, 1.0)
+    assert all(abs(v + 0.1) < 1e-12 for v in water.bvh_gap(d).values())
+
+
+def test_water_by_class_of_a_cubic_block(tmp_path):
+    """A 3x3x3 block's cells sorted by free faces (centre 1, face 6, edge 12, corner 8 cells) from
+    their centroids; each cell's water at the end over that at the start, averaged per class."""
+    from cellmech.tissue import waterblock
+    rows0, rows1 = [], []
+    for i in range(3):
+        for j in range(3):
+            for k in range(3):
+                free = sum(v != 1 for v in (i, j, k))
+                r = [0.0] * 18
+                r[3], r[9:12] = 1000.0, [40.0 * i, 40.0 * j, 40.0 * k]
+                rows0.append(r)
+                rows1.append(r[:3] + [1000.0 * (1 - 0.2 * free)] + r[4:])
+    path = tmp_path / "cells.dat"
+    with open(path, "w") as f:
+        for step, rows in ((0, rows0), (1000, rows1)):
+            f.write(f"{step} {len(rows)}\n")
+            for n, r in enumerate(rows):
+                f.write(f"{n + 1} " + " ".join(str(v) for v in r) + "\n")
+    w = waterblock.water_by_class(str(path))
+    print(w)
+    assert sorted(w) == [0, 1, 2, 3] and all(abs(w[k] - (1 - 0.2 * k)) < 1e-12 for k in range(4))

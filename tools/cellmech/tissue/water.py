@@ -365,8 +365,7 @@ def fluid_text(S):
     a, b = f[0], f[-1]
     return (f"The share of fluid particles within 6.4 um (2 r0) of their own wall goes from {a['near_wall']:.0%} at "
             f"{a['water']:.0%} water to {b['near_wall']:.0%} at {b['water']:.0%}, the median distance to the nearest "
-            f"fluid neighbour from {a['nn_median_um']:.3g} to {b['nn_median_um']:.2g} um: particles collapse onto "
-            "each other, which SPH does not prevent under tension.")
+            f"fluid neighbour from {a['nn_median_um']:.3g} to {b['nn_median_um']:.2g} um.")
 
 
 def spread(rows):
@@ -546,12 +545,13 @@ def dry_text(rep, S, pic, slowed):
           f"lamella bonds {q['debonded']}.", "",
           "*Negative turgor: plasmolysis?* No: the model dries in air (or in a solution that cannot enter the "
           "wall); plasmolysis, where a solution that enters the wall fills the space the protoplast leaves, is not "
-          "modelled (fix cell/fluid's `medium solution` is refused). The protoplasm goes into tension (mean pressure down to "
-          f"{q['turgor_min_kPa']:.4g} kPa) and, being at about its rest density, fills only "
-          f"{q['fill_end']:.0%} of the enclosed volume at the end. It does not pull away from the wall as one "
-          "body, as a plasmolysing protoplast would (the model has no membrane around it): the SPH fluid under "
-          "tension breaks up into clumps (the tensile instability of SPH) spread through the cell, fewer of them "
-          "on the wall as it dries (slices in the pictures). " + fluid_text(S) + "", "",
+          "modelled (fix cell/fluid's `medium solution` is refused). Held by nothing, the protoplasm leaves its wall "
+          f"(mean pressure down to {q['turgor_min_kPa']:.4g} kPa) and, being at about its rest density, fills only "
+          f"{q['fill_end']:.0%} of the enclosed volume at the end (slices in the pictures). " + fluid_text(S)
+          + " With each cell's flux spread over its particles by volume (`share volume`, in.tissue-dry's choice) it "
+          "shrinks inside its wall as one body; with the even share of Eq. 10 as written the light particles on "
+          "the wall dried first and the fluid broke up into clumps under their tension "
+          "(docs/studies/drying-cell.md, \"Continuous drying\").", "",
           "*Published trends (qualitative, from general knowledge of drying studies of apple and potato tissue).* "
           "Turgor is lost early in drying, and cell area and volume then fall steadily with moisture (cells shrink "
           "and their walls fold; tissue shrinkage of the order of the water lost, less at low moisture). The first "
@@ -634,8 +634,9 @@ def hold_weak_check(rep, fast, weak):
     f_, w_ = read_csv(rep.p(f"{fast}/tissue-dry.csv")), read_csv(rep.p(f"{weak}/tissue-dry.csv"))
     e = params.run_settings(rep.p(weak), "in.tissue-dry")
     end = max(float(f_["water_fraction"][-1]), float(w_["water_fraction"][-1])) - 1e-3
+    # below zero turgor, where the cells pull on each other through the lamella
     rows = {str(w): (at(f_, w, "turgor_mean_kPa"), at(w_, w, "turgor_mean_kPa"))
-            for w in (0.9, 0.8, 0.7) if w >= end}
+            for w in (0.8, 0.6, 0.4, 0.2) if w >= end}
     diff = max(abs(a - b) for a, b in rows.values())
     big = max(abs(a) for a, _ in rows.values())
     return dict(sigl=e["sigl"], Gl=e["Gl"], Lp=e["Lp"], end_fraction=float(w_["water_fraction"][-1]),
@@ -752,15 +753,18 @@ def hold_rate_text(r, e):
     """The rate check's sentence and table (lines for rep.w)."""
     if r is None:
         return ["*Rate.* The check at a higher conductivity (stage water-dry-hold-fast) has not run.", ""]
-    dv, dp = spread(r["rows"])
+    dv, _ = spread(r["rows"])
+    # the tension: the rows below zero turgor
+    below = {k: v for k, v in r["rows"].items() if v["turgor_slow"] <= 0.0}
+    _, dp = spread(below) if below else (0.0, 0.0)
     stop = " (stopped by an error)" if r["stop"] else ""
-    big = max(abs(v["turgor_slow"]) for v in r["rows"].values())
+    big = max((abs(v["turgor_slow"]) for v in below.values()), default=0.0)
     # a tenth of the tension: the levels' scatter and the drag's share are below it
     verdict = ("the tension is the water content's, not the rate's." if dp < 0.1 * big else
                f"the rate changes the tension by more than a tenth of it ({big:.3g} kPa): it is partly the rate's.")
     return [f"*Rate.* The same drying at {r['Lp'] / e['Lp']:.3g}x the conductivity (Lp {r['Lp']}, to {r['end_fraction']:.0%} water{stop}) "
-            f"gives the same enclosed volume to {100 * dv:.2g}% of full turgor's and the same mean turgor to "
-            f"{dp:.3g} kPa at equal water: " + verdict, "",
+            f"gives the same enclosed volume to {100 * dv:.2g}% of full turgor's at equal water, and below zero turgor "
+            f"the same mean turgor to {dp:.3g} kPa: " + verdict, "",
             "| water | turgor Lp " + f"{e['Lp']:g}" + " (kPa) | turgor Lp " + f"{r['Lp']:g}" + " (kPa) | volume Lp "
             + f"{e['Lp']:g}" + " | volume Lp " + f"{r['Lp']:g}" + " |", "|---|---|---|---|---|",
             *[f"| {float(w):.0%} | {v['turgor_slow']:.4g} | {v['turgor_fast']:.4g} | {v['volume_slow']:.4f} | "
