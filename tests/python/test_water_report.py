@@ -133,3 +133,28 @@ def test_water_by_class_of_a_cubic_block(tmp_path):
     w = waterblock.water_by_class(str(path))
     print(w)
     assert sorted(w) == [0, 1, 2, 3] and all(abs(w[k] - (1 - 0.2 * k)) < 1e-12 for k in range(4))
+
+
+def test_failure_where_by_layer(tmp_path):
+    """tissuedata.failure_where: the cells that ruptured or debonded during a run, by their layer
+    along z at the start; 3 layers (bottom, middle, top) or 2 (bottom, top)."""
+    from cellmech.tissue import tissuedata as TD
+
+    def table(nz, broken, debonded):
+        path = tmp_path / f"cells{nz}.dat"
+        with open(path, "w") as f:
+            for step, on in ((0, False), (500, True)):
+                f.write(f"{step} {4 * nz}\n")
+                for n in range(4 * nz):
+                    r = [0.0] * 18
+                    r[TD.CELL_ZC] = 40.0 * (n // 4)
+                    r[TD.CELL_NBROKEN] = 3.0 if on and n in broken else 0.0
+                    r[TD.CELL_NDEBONDED] = 2.0 if on and n in debonded else 0.0
+                    f.write(f"{n + 1} " + " ".join(str(v) for v in r) + "\n")
+        return str(path)
+    w3 = TD.failure_where(table(3, broken={0, 1, 9}, debonded={5}))
+    print(w3)
+    assert w3 == dict(layers=3, kinds={"wall rupture": {"bottom": 2, "top": 1},
+                                       "lamella debonding": {"middle": 1}})
+    w2 = TD.failure_where(table(2, broken=set(), debonded={0, 7}))
+    assert w2 == dict(layers=2, kinds={"lamella debonding": {"bottom": 1, "top": 1}})

@@ -119,7 +119,7 @@ def text_campaign(rep, n, c):
     if ln:
         rep.w(f"![{c.page}]({ln[:-3]}.png)", "")
     rep.w(*table(c))
-    notes = C.stopped_text(c.rows)
+    notes = C.stopped_text(c.rows) + C.where_text(c.rows)
     if notes:
         rep.w(*notes.rstrip("\n").split("\n"))
     rep.w("")

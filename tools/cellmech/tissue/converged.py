@@ -37,6 +37,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from .. import params  # noqa: E402
 from .. import quasistatic as Q  # noqa: E402
+from . import tissuedata as T  # noqa: E402
 from .tissuedata import COMPRESS, TENSION, and_list, failure, fmt, gen_stats, load, span  # noqa: E402
 
 PIS = (-100, -364, -600)
@@ -340,6 +341,24 @@ def table(kind, rows):
     return "\n".join(lines)
 
 
+def where_text(rows):
+    """Where each condition failed at v (failure_where), as a list under the table: a failure only in
+    the bottom or top layer, which the plates or grips hold, is the fixture's, not the tissue's."""
+    notes = []
+    for (pi, lam), m in rows.items():
+        w = (m.get("where") or {}).get("kinds")
+        if not w:
+            continue
+        words = "; ".join(f"{kind} in " + ", ".join(f"{n} {layer}" for layer, n in by.items()) + " cell(s)"
+                          for kind, by in w.items())
+        # with two layers every cell is held: the remark needs a middle layer
+        held = m["where"]["layers"] >= 3 and all(set(by) <= {"bottom", "top"} for by in w.values())
+        notes.append(f"* Pi {pi}, {lam} lamella: {words}"
+                     + (" (only in the layers the plates or grips hold)" if held else ""))
+    return ("\nWhere the blocks failed (at v, by the cells' layer along the loading axis at the start):\n\n"
+            + "\n".join(notes) + "\n") if notes else ""
+
+
 def stopped_text(rows):
     """The runs an error stopped before their final strain, as a list under the table."""
     notes = [f"* Pi {pi}, {lam} lamella: {n}" for (pi, lam), m in rows.items() for n in m.get("notes", [])]
@@ -481,7 +500,7 @@ def text(kind, rows, info, gen, name, lams):
 ![stress-strain]({name}.png)
 
 {table(kind, rows)}
-{stopped_text(rows)}
+{stopped_text(rows)}{where_text(rows)}
 *Modulus*: slope of a straight line through the stress over {kind.window[0]:.0%}-{kind.window[1]:.0%}
 strain, given where it has converged (*converged from*, below), else *not converged (X at v)*.
 *Failure stress*: the peak of the stress over 1% strain windows, with its strain, given where the
@@ -557,7 +576,9 @@ def conditions(kind, runs):
     """(load_runs(kind, runs), {(pi, lam): measure(...) with the slow speed v and the notes}): every
     condition of the kind in RUNS, measured and judged."""
     data = load_runs(kind, runs)
-    return data, {key: dict(measure(kind, slow, fast, errors), v=v, notes=stop_notes(v, slow, fast, errors))
+    return data, {key: dict(measure(kind, slow, fast, errors), v=v, notes=stop_notes(v, slow, fast, errors),
+                            where=T.failure_where(f"{runs}/{kind.stage}{key[0]}-{key[1]}-{v:g}/"
+                                                  f"tissue-{kind.stage}-cells.dat"))
                   for key, (v, slow, fast, errors) in data.items()}
 
 

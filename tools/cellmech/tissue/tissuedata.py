@@ -169,3 +169,34 @@ def failure(d, window=0.01):
     # the stress after the peak: the record's last smoothed value against the peak (a failure drops)
     out["final_kPa"] = float(s[-1])
     return out
+
+
+# compute cell/props columns (after the row index) of a per-cell table: centroid z, broken tethers,
+# debonded lamella bonds
+CELL_ZC, CELL_NBROKEN, CELL_NDEBONDED = 11, 12, 15
+
+
+def failure_where(path):
+    """Where a block failed, from its per-cell table (fix ave/time of compute cell/props): for each
+    kind of failure, the cells in which it happened by layer along z (bottom, middle, top thirds of
+    the cells' centroids at the start; bottom and top for two layers): {kind: {layer: cells}}, the
+    counts from the table's first record, and the number of layers (2 or 3). The bottom and top
+    layers are the plates' or the grips'."""
+    if not os.path.exists(path):    # a run without per-cell tables
+        return {}
+    rows = load_table(path)
+    if len(rows) < 2:
+        return {}
+    first, last = rows[0][1], rows[-1][1]
+    z = first[:, CELL_ZC]
+    layers = len(np.unique(np.round((z - z.min()) / max(np.ptp(z), 1e-9) * 2))) if len(z) > 1 else 1
+    cut = np.quantile(z, [1 / 3, 2 / 3]) if layers >= 3 else np.array([np.median(z)])
+    names = ("bottom", "middle", "top") if layers >= 3 else ("bottom", "top")
+    layer = np.digitize(z, cut)
+    out = dict(layers=len(names), kinds={})
+    for kind, col in (("wall rupture", CELL_NBROKEN), ("lamella debonding", CELL_NDEBONDED)):
+        hit = (last[:, col] - first[:, col]) > 0
+        if hit.any():
+            out["kinds"][kind] = {names[k]: int((hit & (layer == k)).sum()) for k in range(len(names))
+                                  if (hit & (layer == k)).any()}
+    return out

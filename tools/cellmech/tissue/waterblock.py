@@ -173,6 +173,9 @@ def rehydrate(rep, S):
                     "turgid block's")
         back_figure(rep, dry, back, f"{name}.png")
         stop = f" The run stopped on an error: `{q['stop']}`." if q["stop"] else ""
+        status = rep.times.get(name, (None, "ok"))[1]
+        if status != "ok" and not q["stop"]:
+            stop += f" The run was stopped before its steps ended (tools/tissue.sh: {status})."
         rep.w(f"*The {what} block* (dried by stage {src} to {q['start_fraction']:.0%} of its water): "
               f"{q['end_fraction']:.1%} of its water after {q['time_us']:.3g} us.{stop}", "",
               "| water | enclosed volume, back | enclosed volume, dried | turgor back (kPa) | turgor dried (kPa) | "
