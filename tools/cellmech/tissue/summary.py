@@ -140,7 +140,8 @@ def water_words(rep):
     back = W.get("rehydrate") or {}
     if back:
         out += ("; back in pure water " + ", ".join(
-            f"the {k} block took back {q['end_fraction']:.0%} of its water and {q['turgor_kPa']:.0f} kPa of turgor"
+            f"the {k} block, dried to {q['start_fraction']:.0%}, held {q['end_fraction']:.0%} of its water again "
+            f"at {q['turgor_kPa']:.0f} kPa of turgor after {q['time_us']:.3g} us"
             for k, q in back.items()))
     return out + "."
 
