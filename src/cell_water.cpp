@@ -58,11 +58,13 @@ double CellWater::pressure(int m) const
   return s.pressure / s.nfluid;
 }
 
-// the share of the cell's flux that fluid particle (mass, rho) takes: 1 / N_f, or V_i / sum V
-double CellWater::share(int m, double mass, double rho) const
+// the cell's flux over the share fluid particle (mass, rho) takes: N_f (Eq. 10), or V_f / V_i
+// (Eq. W5). A divisor, so that share particle computes what Eq. 10 did before share volume, to
+// the bit.
+double CellWater::shares(int m, double mass, double rho) const
 {
   const CellSum &s = sums[m];
-  return settings.share_volume() ? volume_share(mass, rho, s.fluid_volume) : 1.0 / s.nfluid;
+  return settings.share_volume() ? 1.0 / volume_share(mass, rho, s.fluid_volume) : s.nfluid;
 }
 
 // its pressure and, with the solutes kept, its osmotic potential (dPi/dW = -Pi/W by Eq. W1), as
@@ -84,17 +86,17 @@ double CellWater::outside_mass_step(int m, const PairCellSPH *sph, int type, dou
                                     double mass, double dt) const
 {
   const CellSum &s = sums[m];
-  const double f = share(m, mass, rho);
+  const double n = shares(m, mass, rho);
   if (settings.external == WaterSettings::EXT_FLUX)
-    return -settings.ext_value * exposed[m] * dt * f;
+    return -settings.ext_value * exposed[m] * dt / n;
   if (!(lp[m] > 0.0)) return 0.0;
   const double P = sph->pressure(type, rho);
-  // A_c L_p rho / N_f (Eq. 10), or A_c L_p rho V_i / V (Eq. W5)
-  const double k = osmotic_coefficient(exposed[m], lp[m], rho, 1.0 / f);
+  // A_c L_p rho / N_f (Eq. 10), or A_c L_p rho V_i / V_f (Eq. W5)
+  const double k = osmotic_coefficient(exposed[m], lp[m], rho, n);
   double dPdrho = sph->dpressure_drho(type, rho);
-  // kept solutes: the step's uptake dm = f dW also raises Pi by -Pi dm / (f W) (Eq. W1), a
+  // kept solutes: the step's uptake dm = dW / n also raises Pi by -Pi n dm / W (Eq. W1), a
   // stiffness that adds to the pressure's
-  if (settings.solute && s.mass > 0.0) dPdrho -= pinow[m] / (f * s.mass) * mass / rho;
+  if (settings.solute && s.mass > 0.0) dPdrho -= pinow[m] * n / s.mass * mass / rho;
   return osmotic_mass_step(k, dt, P, pinow[m] - settings.ext_value, dPdrho, rho, mass);
 }
 

@@ -42,8 +42,9 @@ class CellWater {
   // the pressure of cell m that its water potential holds (share particle: the particles' mean;
   // share volume: their volume-weighted mean)
   double pressure(int m) const;
-  // the share of cell m's water flux that its fluid particle of this mass and density takes
-  double share(int m, double mass, double rho) const;
+  // cell m's water flux over the share its fluid particle of this mass and density takes: N_f
+  // (share particle), or V_f / V_i (share volume)
+  double shares(int m, double mass, double rho) const;
   // mass a fluid particle of cell m (of a type, density and mass) takes up from the outside in a
   // step dt
   double outside_mass_step(int m, const LAMMPS_NS::PairCellSPH *, int type, double rho, double mass,

@@ -457,7 +457,7 @@ void FixCellFluid::advance_fluid(bool osmosis, const std::vector<double> &uptake
     // its fluid, inside or escaped, no longer exchanges water osmotically
     if (osmosis && m >= 1 && sums[m].nfluid > 0 && sums[m].broken == 0.0) {
       dm = water.outside_mass_step(m, sph, type[i], rho[i], rmass[i], dt);
-      dm += uptake[m] * water.share(m, rmass[i], rho[i]);
+      dm += uptake[m] / water.shares(m, rmass[i], rho[i]);
       if (rmass[i] + dm <= 0.0)
         error->one(FLERR,
                    "Fix cell/fluid {}: fluid particle {} of cell {} would lose all its mass "
