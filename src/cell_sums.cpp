@@ -27,14 +27,16 @@ void CellSums::add_fluid(LAMMPS *lmp, const PairCellSPH *sph, const CellIndex &c
     CellSum &s = sums[m];
     s.nfluid += 1.0;
     s.mass += rmass[i];
-    s.pressure += sph->pressure(type[i], rho[i]);
+    const double P = sph->pressure(type[i], rho[i]);
+    const double dPdrho = sph->dpressure_drho(type[i], rho[i]);
+    s.pressure += P;
     // dP_i/dM of the cell when a mass dM is spread evenly (N dm_i = dM, Eq. 9 at fixed volume)
-    s.stiffness += sph->dpressure_drho(type[i], rho[i]) * rho[i] / rmass[i];
+    s.stiffness += dPdrho * rho[i] / rmass[i];
     s.density += rho[i];
     const double V = rmass[i] / rho[i];
     s.fluid_volume += V;
-    s.volume_pressure += sph->pressure(type[i], rho[i]) * V;
-    s.volume_stiffness += sph->dpressure_drho(type[i], rho[i]) * V;
+    s.volume_pressure += P * V;
+    s.volume_stiffness += dPdrho * V;
   }
 }
 

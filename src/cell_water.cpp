@@ -68,7 +68,7 @@ double CellWater::shares(int m, double mass, double rho) const
 }
 
 // its pressure and, with the solutes kept, its osmotic potential (dPi/dW = -Pi/W by Eq. W1), as
-// the cell's water changes by dM spread by share()
+// the cell's water changes by dM spread by shares()
 double CellWater::potential_stiffness(int m) const
 {
   const CellSum &s = sums[m];
@@ -83,10 +83,9 @@ double CellWater::potential_stiffness(int m) const
 // the whole wall unless exchange yes: its exposed part (Eq. W4); Eq. 10 linearised in the step's
 // own effect on the pressure (osmotic_mass_step), or a set flux spread evenly
 double CellWater::outside_mass_step(int m, const PairCellSPH *sph, int type, double rho,
-                                    double mass, double dt) const
+                                    double mass, double n, double dt) const
 {
   const CellSum &s = sums[m];
-  const double n = shares(m, mass, rho);
   if (settings.external == WaterSettings::EXT_FLUX)
     return -settings.ext_value * exposed[m] * dt / n;
   if (!(lp[m] > 0.0)) return 0.0;

@@ -45,10 +45,10 @@ class CellWater {
   // cell m's water flux over the share its fluid particle of this mass and density takes: N_f
   // (share particle), or V_f / V_i (share volume)
   double shares(int m, double mass, double rho) const;
-  // mass a fluid particle of cell m (of a type, density and mass) takes up from the outside in a
-  // step dt
+  // mass a fluid particle of cell m (of a type, density and mass, its shares() n) takes up from
+  // the outside in a step dt
   double outside_mass_step(int m, const LAMMPS_NS::PairCellSPH *, int type, double rho, double mass,
-                           double dt) const;
+                           double n, double dt) const;
 
   // per cell (slots), the same on every rank: Pi0 and Lp of the cell, and this step's osmotic
   // and water potentials, exposed and glued area

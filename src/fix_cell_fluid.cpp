@@ -456,8 +456,10 @@ void FixCellFluid::advance_fluid(bool osmosis, const std::vector<double> &uptake
     // hole (its triangles and their virtual particles are gone), its protoplast has burst, and
     // its fluid, inside or escaped, no longer exchanges water osmotically
     if (osmosis && m >= 1 && sums[m].nfluid > 0 && sums[m].broken == 0.0) {
-      dm = water.outside_mass_step(m, sph, type[i], rho[i], rmass[i], dt);
-      dm += uptake[m] / water.shares(m, rmass[i], rho[i]);
+      // the particle's part of the cell's flux, from the outside and from its neighbours
+      const double n = water.shares(m, rmass[i], rho[i]);
+      dm = water.outside_mass_step(m, sph, type[i], rho[i], rmass[i], n, dt);
+      dm += uptake[m] / n;
       if (rmass[i] + dm <= 0.0)
         error->one(FLERR,
                    "Fix cell/fluid {}: fluid particle {} of cell {} would lose all its mass "

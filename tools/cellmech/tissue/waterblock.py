@@ -65,10 +65,8 @@ def dry_hold_27(rep, S):
     q["rows"] = shrink_rows(d)
     sec = Wt.section_rows(rep, name, d)
     q["sections"] = {f"{w:.4f}": v for w, v in sec.items()}
-    eight = Wt.read_csv(rep.p("water-dry-hold/tissue-dry.csv")) if os.path.exists(
-        rep.p("water-dry-hold/tissue-dry.csv")) else None
-    if eight is not None:
-        eight = dict(eight, sphericity=Wt.dry_run(rep, "water-dry-hold")["sphericity"])
+    if os.path.exists(rep.p("water-dry-hold/tissue-dry.csv")):
+        eight = Wt.dry_run(rep, "water-dry-hold")
         q["eight"] = {k: v for k, v in shrink_rows(eight).items() if k in q["rows"]}
         q["eight_gap"] = Wt.bvh_gap(eight)
     q["water_by_class"] = water_by_class(rep.p(f"{name}/tissue-dry-cells.dat"))
