@@ -358,3 +358,71 @@ run             10
     refused("10: fix property/atom fields in another order after read_restart", rc, log,
             r"ERROR: .*after read_restart: is fix property/atom defined with the same fields in "
             r"the same order")
+
+
+def _dump_z(path):
+    """{molecule: (type, z)} arrays of a write_dump custom id mol type z file."""
+    a = np.loadtxt(path, skiprows=9, ndmin=2)
+    return a[:, 1].astype(int), a[:, 2].astype(int), a[:, 3]
+
+
+def test_tension_jaws(pair):
+    """Issue 29: in.tissue-tension -var jaws cells holds the whole walls of the cells its grips
+    touch (a specimen's ends glued into its jaws), so that the grips do not set where a block fails
+    (the 27-cell block held by a ring of nodes broke in its gripped layer), and refers the strain to
+    the gauge between them. On a stack of three coarse cells, inflated briefly: each grip holds
+    exactly one cell's wall nodes and no fluid; the gauge printed is the gap between the held
+    walls, measured from the atoms; a pull runs with it. With jaws nodes a grip deeper than the
+    fluid-wall distance held fluid particles too (group ID intersect only adds atoms): the grip
+    holds only the wall nodes within its depth. A block two cells high, or a bad keyword, is refused."""
+    d = pair
+    tension = os.path.join(INPUTS, "in.tissue-tension")
+    base = dict(LEN, dir=INPUTS, restart="pair.restart", vpull=4, strain=0.02, every=50,
+                tabevery=100, rest=0)
+    rc, log = lmp(tension, d, "log.29-jawsfoo", **dict(base, jaws="foo"))
+    refused("29: in.tissue-tension -var jaws foo", rc, log,
+            r"ERROR: in.tissue-tension: -var jaws foo: expected nodes .* or cells")
+    rc, log = lmp(tension, d, "log.29-jawspair", **dict(base, jaws="cells", special=SPECIAL[0]))
+    refused("29: in.tissue-tension -var jaws cells on a pair", rc, log,
+            r"ERROR: in.tissue-tension: -var jaws cells: the cells the two grips touch leave no "
+            r"free cell between them")
+
+    T.cellgen("tissue", "-o", "stack.data", "--lattice", "sc", "--n", 1, 1, 3, "--level", 3,
+              "--nfluid", 440, cwd=d)
+    stats = json.load(open(os.path.join(d, "stack.json")))
+    lens = dict(L3, reach=max(L3["reach"], stats["triangle_quality"]["recommended_reach"]))
+    lmp(os.path.join(INPUTS, "in.tissue-inflate"), d, "log.29-stack", dir=INPUTS, data="stack.data",
+        special=stats["extra_special_per_atom"], nsteps=600, nsettle=200, every=200,
+        restart_out="stack.restart", **lens)
+    with open(os.path.join(d, "atoms.lmp"), "w") as f:
+        f.write("write_dump all custom atoms.txt id mol type z modify sort id\n")
+    run = dict(base, **lens, restart="stack.restart", more="atoms.lmp")
+    for jaws, grip in (("cells", 2.0), ("nodes", 5.0)):
+        rc, log = lmp(tension, d, f"log.29-{jaws}", **dict(run, jaws=jaws, grip=grip))
+        m = re.findall(r"^tension: (\d+) nodes in the bottom grip, (\d+) in the top grip, H0 (\S+) um",
+                       log, re.M)
+        T.check(f"29: jaws {jaws}: the pull runs", rc == 0 and m, f"rc {rc}: {error_line(log)}")
+        if not m:
+            continue
+        nbot, ntop, h0 = int(m[-1][0]), int(m[-1][1]), float(m[-1][2])
+        mol, typ, z = _dump_z(os.path.join(d, "atoms.txt"))
+        wall = typ == 1
+        lo, hi = z[wall].min(), z[wall].max()
+        if jaws == "cells":
+            bottom, top = mol[wall][np.argmin(z[wall])], mol[wall][np.argmax(z[wall])]
+            per_cell = [int((wall & (mol == c)).sum()) for c in (bottom, top)]
+            gauge = z[wall & (mol == top)].min() - z[wall & (mol == bottom)].max()
+            print(f"29: jaws cells: grips {nbot} and {ntop} nodes, the end cells' walls {per_cell}; "
+                  f"gauge {h0} um printed, {gauge:.4f} um between the held walls")
+            T.check("29: jaws cells: each grip holds its end cell's whole wall and no fluid",
+                    [nbot, ntop] == per_cell, f"{[nbot, ntop]} against {per_cell}")
+            T.check("29: jaws cells: the strain refers to the gauge between the held walls",
+                    abs(h0 - gauge) <= 5e-4 * gauge, f"{h0} against {gauge:.5g}")
+        else:
+            near = [(wall & (z <= lo + grip)).sum(), (wall & (z >= hi - grip)).sum()]
+            fluid = [(~wall & (z <= lo + grip)).sum(), (~wall & (z >= hi - grip)).sum()]
+            print(f"29: jaws nodes, grip {grip} um: grips {nbot} and {ntop} nodes; wall nodes "
+                  f"within the grip {near}, fluid particles within it {fluid}")
+            T.check("29: jaws nodes: a grip deeper than the fluid-wall distance holds wall nodes only",
+                    [nbot, ntop] == [int(n) for n in near] and min(fluid) > 0,
+                    f"{[nbot, ntop]} against {near} (fluid within the grip: {fluid})")
