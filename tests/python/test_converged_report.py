@@ -270,3 +270,25 @@ def test_a_failure_next_to_an_error_stop_has_not_converged(tmp_path):
     # an error 3% of strain past the peak, the stress long fallen: the peak stands
     (tmp_path / "d").mkdir()
     assert stopped_runs(tmp_path / "d", {0.5: 0.09})["failure_converged"]
+
+
+def test_a_tension_says_what_its_grips_held(tmp_path):
+    """in.tissue-tension -var jaws cells: the report says the end cells were held whole and that the
+    strain is over the gauge; runs older than the setting (no jaws in settings.json) held nodes."""
+    from cellmech import params
+    e = np.linspace(0.0, 0.1, 21)
+    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
+    for speed in (0.25, 0.125):
+        d = tmp_path / f"tension-364-strong-{speed:g}"
+        d.mkdir()
+        np.savetxt(d / "tissue-tension.dat", rows)
+        params.write_settings(["-in", f"{params.INPUTS}/in.tissue-tension", "-var", "jaws", "cells",
+                               "-var", "grip", "10"], str(d))
+    lams = C.lamella_settings(TENS, str(tmp_path), C.load_runs(TENS, str(tmp_path)))
+    assert C.jaws_cells(lams)
+    words = C.protocol(TENS, lams)
+    assert "`-var jaws cells`" in words and "within 10 um of an end" in words and "gauge" in words
+    assert C.strain_label(TENS, lams) == "strain (opening of the grips / gauge between the held cells)"
+    old = {"strong": {"sigl": 300.0, "Gl": 1000.0}}
+    assert not C.jaws_cells(old) and C.protocol(TENS, old) == TENS.protocol
+    assert C.strain_label(TENS, old) == "strain (opening of the grips / initial height)"

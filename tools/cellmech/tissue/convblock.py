@@ -37,12 +37,18 @@ class Campaign:
         return int(self.gen["cells"])
 
     @property
+    def held_whole(self):
+        """A tension whose grips held the end cells whole (in.tissue-tension -var jaws cells)."""
+        return self.kind.stage == "tension" and C.jaws_cells(self.lams)
+
+    @property
     def tag(self):
-        return f"{self.kind.stage}_{self.cells}"
+        return f"{self.kind.stage}_{self.cells}" + ("_jaws" if self.held_whole else "")
 
     def heading(self):
         shape = self.gen["seeds"].split(",")[0].replace("lattice sc ", "")
-        return f"{shape} block of {self.cells} cells, {'compression' if self.kind.stage == 'compress' else 'tension'}"
+        return (f"{shape} block of {self.cells} cells, {'compression' if self.kind.stage == 'compress' else 'tension'}"
+                + (", its end layers held whole" if self.held_whole else ""))
 
 
 def page_name(kind, runs):
@@ -267,7 +273,8 @@ def section(rep, dirs):
           "passes all three (*converged from*).", "")
     for n, c in enumerate(cs, 1):
         text_campaign(rep, n, c)
-    rep.S["block_converged"] = [{"cells": c.cells, "experiment": c.kind.stage, "runs": c.runs, "page": c.page,
+    rep.S["block_converged"] = [{"cells": c.cells, "experiment": c.kind.stage, "ends_held_whole": c.held_whole,
+                                 "runs": c.runs, "page": c.page,
                                  "modulus_window": list(c.kind.window),
                                  "lamellae": {lam: {"sigl_kPa": s["sigl"], "Gl": s["Gl"]} for lam, s in c.lams.items()},
                                  "conditions": {f"{pi}_{lam}": jsonable(m) for (pi, lam), m in c.rows.items()}}

@@ -271,8 +271,7 @@ def figure(kind, data, lams, path):
             ax.plot(fast["strain"], fast["stress_kPa"], color=c, lw=0.8, ls="--", label=f"Pi {pi} kPa, {2 * v:g} m/s")
         if lam in lams:
             ax.set_title(f"{lam} lamella (sigl {lams[lam]['sigl']:g} kPa, Gc {lams[lam]['Gl'] / 1000:g} J/m^2)", fontsize=10)
-        ax.set_xlabel("strain (closing of the plates / initial height)" if kind.stage == "compress"
-                      else "strain (opening of the grips / initial height)")
+        ax.set_xlabel(strain_label(kind, lams))
         ax.legend(fontsize=7)
     axes[0].set_ylabel(f"stress (top {kind.ends[:-1]} force / initial cross-section, kPa)")
     fig.tight_layout()
@@ -466,6 +465,31 @@ def failure_rule(kind):
             f"stopped by an error within {TOL_STRAIN:.0%} strain after its peak")
 
 
+def jaws_cells(lams):
+    """Whether the grips held the end cells whole (in.tissue-tension -var jaws cells): the strain
+    is then over the gauge between them. Runs older than the setting held nodes."""
+    return any(st.get("jaws", "nodes") == "cells" for st in lams.values())
+
+
+def protocol(kind, lams):
+    """How the block was loaded, in words: the kind's protocol, with what the grips held."""
+    if not jaws_cells(lams):
+        return kind.protocol
+    grip = next(iter(lams.values())).get("grip")
+    return kind.protocol.replace(
+        "the wall nodes near its bottom and top gripped",
+        f"the whole walls of the cells at its bottom and top held by the grips (`-var jaws cells`, every cell "
+        f"with a wall node within {grip:g} um of an end: the ends glued in, so the held cells cannot rupture; "
+        "strain = the grips' travel over the gauge, the gap between the held walls)")
+
+
+def strain_label(kind, lams):
+    if kind.stage == "compress":
+        return "strain (closing of the plates / initial height)"
+    return ("strain (opening of the grips / gauge between the held cells)" if jaws_cells(lams)
+            else "strain (opening of the grips / initial height)")
+
+
 def summary(kind, rows, gen, lams, lamf):
     """The plain-language summary at the top: what ran, the main numbers, what passed."""
     conv = [m for m in rows.values() if m["converged"]]
@@ -476,7 +500,7 @@ def summary(kind, rows, gen, lams, lamf):
     speeds = sorted({m["v"] for m in rows.values()})
     ran = (f"{block_words(gen)}, glued by the middle lamella, was inflated at Pi "
            f"{and_list(map(str, pis))} kPa with {lamella_words(lams)}, then {kind.did} "
-           f"(walls rupture at the paper's critical stretch {lamf:g}) with {kind.protocol}, "
+           f"(walls rupture at the paper's critical stretch {lamf:g}) with {protocol(kind, lams)}, "
            f"at v = {and_list(f'{v:g}' for v in speeds)} m/s (the "
            "speed column) and, as the rate evidence, at 2v (the ladder's last two rungs).")
     passed = (f"The modulus converged in {len(conv)} of {len(rows)} conditions ({modulus_rule(kind)})"
@@ -545,9 +569,10 @@ What the model gives, and why it differs:
   docs/tissue.md (in.tissue-impact), labelled as such.
 
 The compression reports are docs/tissue-quasistatic.md (the 2x2x2 block) and
-docs/tissue-quasistatic-27.md (the 27-cell block), the tension report of the 2x2x2 block
-docs/tissue-tension-quasistatic.md (`tools/tissue-converged.sh` says how each is made). Not yet held
-(issue 29, item 4): a random Laguerre block at converged rates, and the 27-cell block in tension.
+docs/tissue-quasistatic-27.md (the 27-cell block), the tension reports docs/tissue-tension-quasistatic.md
+(the 2x2x2 block), docs/tissue-tension-quasistatic-27.md (the 27-cell block held by rings of nodes) and
+docs/tissue-tension-jaws-27.md (held by its end layers) (`tools/tissue-converged.sh` says how each is
+made). Not yet held (issue 29, item 4): a random Laguerre block at converged rates.
 
 ## References
 

@@ -25,14 +25,19 @@ def pair_words(rep):
             f"x glued area ({'within' if abs(S['W_over_GcA'] - 1) <= 0.15 else 'not within'} 15% of 1).")
 
 
+def experiment_words(c):
+    """'compression', 'tension' or 'tension, end layers held whole' of a converged campaign."""
+    return ("compression" if c["experiment"] == "compress" else
+            "tension" + (", end layers held whole" if c.get("ends_held_whole") else ""))
+
+
 def by_kind(rows, key):
     """'A-B kPa (8-cell compression, 3 of 6 conditions), ...' of the converged values of key."""
     out = []
     for c in rows:
         vals = [f(m) for m in c["conditions"].values() for f in [key] if f(m) is not None]
-        out.append(f"{span(vals, ' kPa') if vals else 'none'} ({c['cells']}-cell "
-                   f"{'compression' if c['experiment'] == 'compress' else 'tension'}, {len(vals)} of "
-                   f"{len(c['conditions'])} conditions)")
+        out.append(f"{span(vals, ' kPa') if vals else 'none'} ({c['cells']}-cell {experiment_words(c)}, "
+                   f"{len(vals)} of {len(c['conditions'])} conditions)")
     return "; ".join(out)
 
 
@@ -78,7 +83,8 @@ def block_words(rep):
     lams = cs[0]["lamellae"]
     modes = [m["mode"] for m in conds]
     pis = sorted({int(k.split("_")[0]) for c in cs for k in c["conditions"]}, reverse=True)
-    ran = and_list(f"{c['cells']}-cell blocks {'compressed' if c['experiment'] == 'compress' else 'pulled apart'} at "
+    ran = and_list(f"{c['cells']}-cell blocks {'compressed' if c['experiment'] == 'compress' else 'pulled apart'}"
+                   f"{' held by their end layers' if c.get('ends_held_whole') else ''} at "
                    f"{and_list(f'{v:g}' for v in sorted({m['v_m_s'] for m in c['conditions'].values()}))} m/s"
                    for c in cs)
     return (f"Blocks were inflated at Pi {and_list(map(str, pis))} kPa with a strong (sigl "
