@@ -292,3 +292,16 @@ def test_a_tension_says_what_its_grips_held(tmp_path):
     old = {"strong": {"sigl": 300.0, "Gl": 1000.0}}
     assert not C.jaws_cells(old) and C.protocol(TENS, old) == TENS.protocol
     assert C.strain_label(TENS, old) == "strain (opening of the grips / initial height)"
+
+
+def test_where_says_a_debond_next_to_the_held_layers():
+    """where_text: a debonding only at the interfaces with end layers held whole is named as such;
+    one between two free layers, or with the ends held by nodes, is not."""
+    def row(faces, held):
+        return {"where": dict(layers=3, kinds={"lamella debonding": {"bottom": 9, "middle": 9}},
+                              interfaces=faces, held_whole=held)}
+    jaws = C.where_text({(-364, "strong"): row({"bottom-middle": 765}, True)})
+    assert "the debonded bonds by interface: bottom-middle 765" in jaws
+    assert "(only at the interfaces with the end layers the grips hold whole)" in jaws
+    assert "hold whole" not in C.where_text({(-364, "strong"): row({"bottom-middle": 765}, False)})
+    assert "hold whole" not in C.where_text({(-364, "strong"): row({"middle-middle": 5}, True)})

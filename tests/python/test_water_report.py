@@ -158,3 +158,32 @@ def test_failure_where_by_layer(tmp_path):
                                        "lamella debonding": {"middle": 1}})
     w2 = TD.failure_where(table(2, broken=set(), debonded={0, 7}))
     assert w2 == dict(layers=2, kinds={"lamella debonding": {"bottom": 1, "top": 1}})
+
+
+def test_debonds_by_interface(tmp_path):
+    """tissuedata.failure_where with the per-pair table: the lamella bonds that let go during the
+    run, by the layers of the two cells they glued (a pair that appears only later counts from 0)."""
+    from cellmech.tissue import tissuedata as TD
+    cells, pairs = tmp_path / "cells.dat", tmp_path / "pairs.dat"
+    z = {1: 0.0, 2: 40.0, 3: 80.0, 4: 0.0, 5: 40.0, 6: 80.0}
+    deb = {1: 2.0, 2: 2.0, 4: 1.0, 5: 1.0}   # cells 1-2 and 4-5 (bottom-middle) let go
+    with open(cells, "w") as f:
+        for step, on in ((0, False), (500, True)):
+            f.write(f"{step} 6\n")
+            for n in range(1, 7):
+                r = [0.0] * 18
+                r[TD.CELL_ZC] = z[n]
+                r[TD.CELL_NDEBONDED] = deb.get(n, 0.0) if on else 0.0
+                f.write(f"{n} " + " ".join(str(v) for v in r) + "\n")
+    col = TD.PAIRS.index("debonded_bonds")
+    with open(pairs, "w") as f:
+        for step, table in ((0, {(1, 2): 0, (2, 3): 0}), (500, {(1, 2): 7, (2, 3): 0, (4, 5): 3})):
+            f.write(f"{step} {len(table)}\n")
+            for n, ((i, j), d) in enumerate(table.items()):
+                r = [0.0] * len(TD.PAIRS)
+                r[0], r[1], r[col] = i, j, d
+                f.write(f"{n + 1} " + " ".join(str(v) for v in r) + "\n")
+    w = TD.failure_where(str(cells), str(pairs))
+    print(w)
+    assert w["kinds"] == {"lamella debonding": {"bottom": 2, "middle": 2}}
+    assert w["interfaces"] == {"bottom-middle": 10}

@@ -342,7 +342,9 @@ def table(kind, rows):
 
 def where_text(rows):
     """Where each condition failed at v (failure_where), as a list under the table: a failure only in
-    the bottom or top layer, which the plates or grips hold, is the fixture's, not the tissue's."""
+    the bottom or top layer, which the plates or grips hold, is the fixture's, not the tissue's; so
+    is a debonding only at the interfaces with end layers held whole (jaws cells), as far as the
+    held cells' rigid walls load their lamella otherwise than a free cell's would."""
     notes = []
     for (pi, lam), m in rows.items():
         w = (m.get("where") or {}).get("kinds")
@@ -351,9 +353,16 @@ def where_text(rows):
         words = "; ".join(f"{kind} in " + ", ".join(f"{n} {layer}" for layer, n in by.items()) + " cell(s)"
                           for kind, by in w.items())
         # with two layers every cell is held: the remark needs a middle layer
-        held = m["where"]["layers"] >= 3 and all(set(by) <= {"bottom", "top"} for by in w.values())
+        three = m["where"]["layers"] >= 3
+        held = three and all(set(by) <= {"bottom", "top"} for by in w.values())
+        faces = m["where"].get("interfaces") or {}
+        if faces:
+            words += "; the debonded bonds by interface: " + ", ".join(f"{k} {n}" for k, n in faces.items())
+        at_jaws = (three and m["where"].get("held_whole") and faces and "wall rupture" not in w
+                   and all("bottom" in k or "top" in k for k in faces))
         notes.append(f"* Pi {pi}, {lam} lamella: {words}"
-                     + (" (only in the layers the plates or grips hold)" if held else ""))
+                     + (" (only in the layers the plates or grips hold)" if held else "")
+                     + (" (only at the interfaces with the end layers the grips hold whole)" if at_jaws else ""))
     return ("\nWhere the blocks failed (at v, by the cells' layer along the loading axis at the start):\n\n"
             + "\n".join(notes) + "\n") if notes else ""
 
@@ -601,9 +610,13 @@ def conditions(kind, runs):
     """(load_runs(kind, runs), {(pi, lam): measure(...) with the slow speed v and the notes}): every
     condition of the kind in RUNS, measured and judged."""
     data = load_runs(kind, runs)
+
+    def where(pi, lam, v):
+        run = f"{runs}/{kind.stage}{pi}-{lam}-{v:g}/tissue-{kind.stage}"
+        return dict(T.failure_where(f"{run}-cells.dat", f"{run}-pairs.dat"),
+                    held_whole=kind.stage == "tension" and jaws_cells({lam: run_settings(kind, runs, pi, lam, v)}))
     return data, {key: dict(measure(kind, slow, fast, errors), v=v, notes=stop_notes(v, slow, fast, errors),
-                            where=T.failure_where(f"{runs}/{kind.stage}{key[0]}-{key[1]}-{v:g}/"
-                                                  f"tissue-{kind.stage}-cells.dat"))
+                            where=where(*key, v))
                   for key, (v, slow, fast, errors) in data.items()}
 
 

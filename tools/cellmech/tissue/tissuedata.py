@@ -176,12 +176,13 @@ def failure(d, window=0.01):
 CELL_ZC, CELL_NBROKEN, CELL_NDEBONDED = 11, 12, 15
 
 
-def failure_where(path):
+def failure_where(path, pairs=None):
     """Where a block failed, from its per-cell table (fix ave/time of compute cell/props): for each
     kind of failure, the cells in which it happened by layer along z (bottom, middle, top thirds of
     the cells' centroids at the start; bottom and top for two layers): {kind: {layer: cells}}, the
     counts from the table's first record, and the number of layers (2 or 3). The bottom and top
-    layers are the plates' or the grips'."""
+    layers are the plates' or the grips'. With the per-pair table (compute cell/contacts), also the
+    debonded bonds by interface between layers: {"bottom-middle": bonds, ...}."""
     if not os.path.exists(path):    # a run without per-cell tables
         return {}
     rows = load_table(path)
@@ -199,4 +200,24 @@ def failure_where(path):
         if hit.any():
             out["kinds"][kind] = {names[k]: int((hit & (layer == k)).sum()) for k in range(len(names))
                                   if (hit & (layer == k)).any()}
+    if pairs and os.path.exists(pairs) and "lamella debonding" in out["kinds"]:
+        out["interfaces"] = debond_interfaces(pairs, [names[k] for k in layer])
+    return out
+
+
+def debond_interfaces(pairs, names):
+    """{"bottom-middle": debonded lamella bonds, ...}: the bonds that let go during the run, by the
+    layers (names, one per cell in cell order) of the two cells they glued, from the per-pair table."""
+    rows = load_table(pairs)
+    col, at = PAIRS.index("debonded_bonds"), {}
+    for r in rows[0][1]:
+        at[int(r[0]), int(r[1])] = r[col]
+    out = {}
+    order = {"bottom": 0, "middle": 1, "top": 2}
+    for r in rows[-1][1]:
+        i, j = int(r[0]), int(r[1])
+        n = r[col] - at.get((i, j), 0.0)
+        if n > 0:
+            key = "-".join(sorted((names[i - 1], names[j - 1]), key=order.get))
+            out[key] = out.get(key, 0) + int(round(n))
     return out
