@@ -89,6 +89,7 @@ void AngleCellMembrane::compute(int eflag, int vflag)
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   double eangle = 0.0;
+  rest_shapes();
 
   for (int n = 0; n < nanglelist; n++) {
     const int type = anglelist[n][3];
@@ -98,7 +99,7 @@ void AngleCellMembrane::compute(int eflag, int vflag)
     double a[3], c[3];
     MembraneRest rest;
     MembraneStrain s;
-    if (!shape(ia, ib, ic, rest, s, a, c))
+    if (!cached_shape(n, ia, ib, ic, rest, s, a, c))
       error->one(FLERR,
                  "Angle style cell/membrane: triangle {}-{}-{} has no area in its reference "
                  "shape; are the d2_{} reference positions set and communicated to ghosts "
@@ -159,6 +160,46 @@ bool AngleCellMembrane::shape(int ia, int ib, int ic, MembraneRest &rest, Membra
     c[d] = x[ic][d] - x[ib][d];
   }
   if (!membrane_rest(A, C, rest)) return false;
+  membrane_strain(rest, a, c, s);
+  return true;
+}
+
+void AngleCellMembrane::rest_shapes()
+{
+  int **anglelist = neighbor->anglelist;
+  const int nanglelist = neighbor->nanglelist;
+  if (!CellMech::list_rebuilt(lmp, rest_build, rests.size(), nanglelist)) return;
+  double **ref = atom->darray[iref];
+  rests.assign(nanglelist, RestShape{0.0, 0.0, 0.0, 0.0});
+  for (int n = 0; n < nanglelist; n++) {
+    const int ia = anglelist[n][0], ib = anglelist[n][1], ic = anglelist[n][2];
+    double A[3], C[3];
+    for (int d = 0; d < 3; d++) {
+      A[d] = ref[ia][d] - ref[ib][d];
+      C[d] = ref[ic][d] - ref[ib][d];
+    }
+    MembraneRest rest;
+    if (membrane_rest(A, C, rest))
+      rests[n] = RestShape{rest.Dinv[0][0], rest.Dinv[0][1], rest.Dinv[1][1], rest.area};
+  }
+}
+
+// shape() with the rest shape of entry n of the angle list (rest_shapes): the same numbers
+bool AngleCellMembrane::cached_shape(int n, int ia, int ib, int ic, MembraneRest &rest,
+                                     MembraneStrain &s, double a[3], double c[3]) const
+{
+  const RestShape &r = rests[n];
+  if (!(r.area > 0.0)) return false;
+  rest.Dinv[0][0] = r.d00;
+  rest.Dinv[0][1] = r.d01;
+  rest.Dinv[1][0] = 0.0;
+  rest.Dinv[1][1] = r.d11;
+  rest.area = r.area;
+  double **x = atom->x;
+  for (int d = 0; d < 3; d++) {
+    a[d] = x[ia][d] - x[ib][d];
+    c[d] = x[ic][d] - x[ib][d];
+  }
   membrane_strain(rest, a, c, s);
   return true;
 }

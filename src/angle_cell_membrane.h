@@ -50,13 +50,25 @@ class AngleCellMembrane : public Angle {
   double *G, *t0, *gamma, *lamf;
   double *wrinkle;    // 0: full sheet (Eq. M1); 1 + r: tension-field theory (M3, M4: residual r)
   double residual(int type) const { return wrinkle[type] > 0.0 ? wrinkle[type] - 1.0 : 0.0; }
-  int iref;         // index of the reference-position array d2_cellref in atom->darray
+  int iref;    // index of the reference-position array d2_cellref in atom->darray
   // the bookkeeping of failures (fix CELL_TETHER_BREAK) when some angle type has a critical
   // stretch lamf, else null
   class FixCellTetherBreak *breaker;
 
   bool shape(int ia, int ib, int ic, CellPhysics::MembraneRest &, CellPhysics::MembraneStrain &,
              double a[3], double c[3]);
+  // per entry of neighbor->anglelist since its last build (rest_build, its timestep): the rest
+  // shape of its triangle, D^-1 (upper triangular) and area; area 0: none. The reference
+  // positions do not change, so it is found once per build, not each step (membrane_rest costs
+  // three square roots and three divisions: 12% of the full cell's step)
+  struct RestShape {
+    double d00, d01, d11, area;
+  };
+  bigint rest_build = -1;
+  std::vector<RestShape> rests;
+  void rest_shapes();
+  bool cached_shape(int n, int ia, int ib, int ic, CellPhysics::MembraneRest &,
+                    CellPhysics::MembraneStrain &, double a[3], double c[3]) const;
   void add_damping(int type, const int node[3], double *fn[3]);
   void allocate();
   void degenerate(int, int, int, double);
