@@ -43,6 +43,7 @@ at 1.25% strain (inertia); 86 bonds (1658 um^2) debonded, no tether broken. Abou
 """
 import json
 import os
+import re
 from types import SimpleNamespace
 
 import numpy as np
@@ -105,7 +106,7 @@ def records(pulled):
     rec = load(f"{d}/{prefix}.dat", TENSION)
     cells = load_table(f"{d}/{prefix}-cells.dat")
     pairs = load_table(f"{d}/{prefix}-pairs.dat")
-    A0 = float(log.split("um^2\n")[0].split("A0 ")[-1])     # the print line of in.tissue-tension
+    A0 = float(re.findall(r"^tension: .* A0 (\S+) um\^2", log, re.M)[-1])    # in.tissue-tension's print
     mom = np.loadtxt(f"{d}/{momentum}", ndmin=2)
     fmean = np.loadtxt(f"{d}/{gripmean}", ndmin=2)
     assert np.array_equal(mom[:, 0], rec["step"]) and np.array_equal(fmean[:, 0], rec["step"][1:])
