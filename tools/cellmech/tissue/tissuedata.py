@@ -218,6 +218,6 @@ def debond_interfaces(pairs, names):
         i, j = int(r[0]), int(r[1])
         n = r[col] - at.get((i, j), 0.0)
         if n > 0:
-            key = "-".join(sorted((names[i - 1], names[j - 1]), key=order.get))
+            key = tuple(sorted((names[i - 1], names[j - 1]), key=order.get))
             out[key] = out.get(key, 0) + int(round(n))
-    return out
+    return {"-".join(k): out[k] for k in sorted(out, key=lambda k: (order[k[0]], order[k[1]]))}
