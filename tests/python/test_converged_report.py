@@ -23,6 +23,20 @@ def record(strain, stress, a0=1.0e4, ke=0.0):
     return d
 
 
+def flat_runs(root, stage, pi, lam, speeds, args=None):
+    """Run folders STAGE{PI}-{LAM}-{SPEED} holding a flat record over 0-10% strain, each with the
+    settings.json of in.tissue-STAGE given the -var args (none: no settings.json)."""
+    from cellmech import params
+    e = np.linspace(0.0, 0.1, 21)
+    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
+    for speed in speeds:
+        d = root / f"{stage}{pi}-{lam}-{speed:g}"
+        d.mkdir()
+        np.savetxt(d / f"tissue-{stage}.dat", rows)
+        if args is not None:
+            params.write_settings(["-in", f"{params.INPUTS}/in.tissue-{stage}", *args], str(d))
+
+
 def test_modulus_is_the_slope_over_its_window():
     e = np.linspace(0.0, 0.1, 201)
     s = 700.0 * e + 3.0 * np.sin(200 * e) * (e > 0.05)     # linear in the window, noisy after it
@@ -99,15 +113,9 @@ def test_a_stress_still_rising_at_the_end_is_no_failure_stress():
 def test_the_lamellae_are_read_from_the_runs_settings(tmp_path):
     """The report names each lamella as its runs were given it (settings.json), not as restated."""
     from cellmech import params
-    e = np.linspace(0.0, 0.1, 21)
-    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
     for lam, sigl in (("strong", 42.0), ("weak", 7.0)):
-        for speed in (0.5, 0.25):
-            d = tmp_path / f"compress-364-{lam}-{speed:g}"
-            d.mkdir()
-            np.savetxt(d / "tissue-compress.dat", rows)
-            params.write_settings(["-in", f"{params.INPUTS}/in.tissue-compress", "-var", "sigl", str(sigl),
-                                   "-var", "Gl", "250", "-var", "lamf", "1.05"], str(d))
+        flat_runs(tmp_path, "compress", -364, lam, (0.5, 0.25), ["-var", "sigl", str(sigl), "-var", "Gl", "250",
+                                                                 "-var", "lamf", "1.05"])
     lams = C.lamella_settings(COMP, str(tmp_path), C.load_runs(COMP, str(tmp_path)))
     assert (lams["strong"]["sigl"], lams["weak"]["sigl"], lams["weak"]["Gl"]) == (42.0, 7.0, 250.0)
     assert C.lamella_words(lams) == ("a strong (sigl 42 kPa, Gl 0.25 J/m^2) and a weak lamella "
@@ -144,12 +152,7 @@ def test_a_tension_is_judged_on_the_rise_to_its_peak():
 
 
 def test_a_tension_run_folder_is_read_as_such(tmp_path):
-    e = np.linspace(0.0, 0.1, 21)
-    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
-    for speed in (0.125, 0.0625):
-        d = tmp_path / f"tension-100-weak-{speed:g}"
-        d.mkdir()
-        np.savetxt(d / "tissue-tension.dat", rows)
+    flat_runs(tmp_path, "tension", -100, "weak", (0.125, 0.0625))
     (tmp_path / "compress-100-weak-0.25").mkdir()           # the other experiment's runs are not read
     found = C.load_runs(TENS, str(tmp_path))
     assert list(found) == [(-100, "weak")] and found[-100, "weak"][0] == 0.0625
@@ -275,15 +278,7 @@ def test_a_failure_next_to_an_error_stop_has_not_converged(tmp_path):
 def test_a_tension_says_what_its_grips_held(tmp_path):
     """in.tissue-tension -var jaws cells: the report says the end cells were held whole and that the
     strain is over the gauge; runs older than the setting (no jaws in settings.json) held nodes."""
-    from cellmech import params
-    e = np.linspace(0.0, 0.1, 21)
-    rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])
-    for speed in (0.25, 0.125):
-        d = tmp_path / f"tension-364-strong-{speed:g}"
-        d.mkdir()
-        np.savetxt(d / "tissue-tension.dat", rows)
-        params.write_settings(["-in", f"{params.INPUTS}/in.tissue-tension", "-var", "jaws", "cells",
-                               "-var", "grip", "10"], str(d))
+    flat_runs(tmp_path, "tension", -364, "strong", (0.25, 0.125), ["-var", "jaws", "cells", "-var", "grip", "10"])
     lams = C.lamella_settings(TENS, str(tmp_path), C.load_runs(TENS, str(tmp_path)))
     assert C.jaws_cells(lams)
     words = C.protocol(TENS, lams)
