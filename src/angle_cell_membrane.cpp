@@ -148,20 +148,35 @@ void AngleCellMembrane::compute(int eflag, int vflag)
 ------------------------------------------------------------------------- */
 
 bool AngleCellMembrane::shape(int ia, int ib, int ic, MembraneRest &rest, MembraneStrain &s,
-                              double a[3], double c[3])
+                              double a[3], double c[3]) const
 {
-  double **x = atom->x;
+  if (!rest_shape(ia, ib, ic, rest)) return false;
+  strain(rest, ia, ib, ic, s, a, c);
+  return true;
+}
+
+// the rest shape from the nodes' reference positions; false if it has no area
+bool AngleCellMembrane::rest_shape(int ia, int ib, int ic, MembraneRest &rest) const
+{
   double **ref = atom->darray[iref];
   double A[3], C[3];
   for (int d = 0; d < 3; d++) {
     A[d] = ref[ia][d] - ref[ib][d];
     C[d] = ref[ic][d] - ref[ib][d];
+  }
+  return membrane_rest(A, C, rest);
+}
+
+// the current edges a, c from the central node ib and the strain against the rest shape
+void AngleCellMembrane::strain(const MembraneRest &rest, int ia, int ib, int ic, MembraneStrain &s,
+                               double a[3], double c[3]) const
+{
+  double **x = atom->x;
+  for (int d = 0; d < 3; d++) {
     a[d] = x[ia][d] - x[ib][d];
     c[d] = x[ic][d] - x[ib][d];
   }
-  if (!membrane_rest(A, C, rest)) return false;
   membrane_strain(rest, a, c, s);
-  return true;
 }
 
 void AngleCellMembrane::rest_shapes()
@@ -169,17 +184,10 @@ void AngleCellMembrane::rest_shapes()
   int **anglelist = neighbor->anglelist;
   const int nanglelist = neighbor->nanglelist;
   if (!CellMech::list_rebuilt(lmp, rest_build, rests.size(), nanglelist)) return;
-  double **ref = atom->darray[iref];
   rests.assign(nanglelist, RestShape{0.0, 0.0, 0.0, 0.0});
   for (int n = 0; n < nanglelist; n++) {
-    const int ia = anglelist[n][0], ib = anglelist[n][1], ic = anglelist[n][2];
-    double A[3], C[3];
-    for (int d = 0; d < 3; d++) {
-      A[d] = ref[ia][d] - ref[ib][d];
-      C[d] = ref[ic][d] - ref[ib][d];
-    }
     MembraneRest rest;
-    if (membrane_rest(A, C, rest))
+    if (rest_shape(anglelist[n][0], anglelist[n][1], anglelist[n][2], rest))
       rests[n] = RestShape{rest.Dinv[0][0], rest.Dinv[0][1], rest.Dinv[1][1], rest.area};
   }
 }
@@ -195,12 +203,7 @@ bool AngleCellMembrane::cached_shape(int n, int ia, int ib, int ic, MembraneRest
   rest.Dinv[1][0] = 0.0;
   rest.Dinv[1][1] = r.d11;
   rest.area = r.area;
-  double **x = atom->x;
-  for (int d = 0; d < 3; d++) {
-    a[d] = x[ia][d] - x[ib][d];
-    c[d] = x[ic][d] - x[ib][d];
-  }
-  membrane_strain(rest, a, c, s);
+  strain(rest, ia, ib, ic, s, a, c);
   return true;
 }
 

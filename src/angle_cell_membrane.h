@@ -56,7 +56,10 @@ class AngleCellMembrane : public Angle {
   class FixCellTetherBreak *breaker;
 
   bool shape(int ia, int ib, int ic, CellPhysics::MembraneRest &, CellPhysics::MembraneStrain &,
-             double a[3], double c[3]);
+             double a[3], double c[3]) const;
+  bool rest_shape(int ia, int ib, int ic, CellPhysics::MembraneRest &) const;
+  void strain(const CellPhysics::MembraneRest &, int ia, int ib, int ic,
+              CellPhysics::MembraneStrain &, double a[3], double c[3]) const;
   // per entry of neighbor->anglelist since its last build (rest_build, its timestep): the rest
   // shape of its triangle, D^-1 (upper triangular) and area; area 0: none. The reference
   // positions do not change, so it is found once per build, not each step (membrane_rest costs

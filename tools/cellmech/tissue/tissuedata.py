@@ -201,23 +201,23 @@ def failure_where(path, pairs=None):
             out["kinds"][kind] = {names[k]: int((hit & (layer == k)).sum()) for k in range(len(names))
                                   if (hit & (layer == k)).any()}
     if pairs and os.path.exists(pairs) and "lamella debonding" in out["kinds"]:
-        out["interfaces"] = debond_interfaces(pairs, [names[k] for k in layer])
+        out["interfaces"] = debond_interfaces(pairs, layer, names)
     return out
 
 
-def debond_interfaces(pairs, names):
+def debond_interfaces(pairs, layer, names):
     """{"bottom-middle": debonded lamella bonds, ...}: the bonds that let go during the run, by the
-    layers (names, one per cell in cell order) of the two cells they glued, from the per-pair table."""
+    layers (layer: one index into names per cell, in cell order) of the two cells they glued, from
+    the per-pair table; bottom first."""
     rows = load_table(pairs)
     col, at = PAIRS.index("debonded_bonds"), {}
     for r in rows[0][1]:
         at[int(r[0]), int(r[1])] = r[col]
     out = {}
-    order = {"bottom": 0, "middle": 1, "top": 2}
     for r in rows[-1][1]:
         i, j = int(r[0]), int(r[1])
         n = r[col] - at.get((i, j), 0.0)
         if n > 0:
-            key = tuple(sorted((names[i - 1], names[j - 1]), key=order.get))
+            key = tuple(sorted((layer[i - 1], layer[j - 1])))
             out[key] = out.get(key, 0) + int(round(n))
-    return {"-".join(k): out[k] for k in sorted(out, key=lambda k: (order[k[0]], order[k[1]]))}
+    return {f"{names[a]}-{names[b]}": out[a, b] for a, b in sorted(out)}
