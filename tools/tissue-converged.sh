@@ -19,7 +19,9 @@
 #                                                  # at 0.0625 and 0.125 m/s to 8% strain:
 #                                                  # docs/tissue-tension-quasistatic.md
 # Environment: EXP (compress or tension: in.tissue-EXP, stages EXP-PI-LAM-V; the inflations are
-# shared), OUT (run folder), BLOCK (cells along x y z, "2 2 2"), V (fast speed, m/s, default
+# shared), OUT (run folder), BLOCK (cells along x y z, "2 2 2"), SEEDS (cellgen.py tissue's seeding
+# and shape options in place of the lattice block, e.g. the random Laguerre block
+# "--random 27 --lloyd 5 --seed 4", docs/cellgen.rst), V (fast speed, m/s, default
 # 0.5, tension 0.125: it converges only at 0.0625 m/s, docs/Howto_tissue.rst), STRAIN (0.2, tension 0.08), RESPA (inner wall steps per fluid step, in.tissue-compress -var respa; 1),
 # NP (MPI ranks per run, 1), JOBS (runs at a time, 2), NAME (the report's file name,
 # tissue-quasistatic, tension: tissue-tension-quasistatic), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
@@ -74,7 +76,9 @@ declare -A SIGL GL
 for lam in strong weak; do read -r "SIGL[$lam]" "GL[$lam]" < <($py -m cellmech.params lamella $lam sigl Gl); done
 PIS=${PIS:-"-100 -364 -600"}
 read -r NF < <(level_params 3 nfluid)
-gen() { $py "$here/tools/cellgen.py" tissue -o block.data --lattice sc --n $BLOCK --level 3 --nfluid "$NF" \
+SEEDS=${SEEDS:-"--lattice sc --n $BLOCK"}
+# shellcheck disable=SC2086  # SEEDS is a list of cellgen options
+gen() { $py "$here/tools/cellgen.py" tissue -o block.data $SEEDS --level 3 --nfluid "$NF" \
           --stats block.json > block.txt; }
 stage gen gen
 # lmp ARGS...: a LAMMPS run, its effective settings first written to ./settings.json
@@ -106,7 +110,7 @@ done; done; done
 wait
 # what ran, appended for each call that compressed or pulled (the report prints it)
 if [ -z "${ONLY:-}" ] || [[ "$ONLY" == *"$EXP"* ]]; then
-  echo "$([ "$EXP" = tension ] && echo "EXP=tension ${JAWS:+JAWS=$JAWS }${GRIP:+GRIP=$GRIP }")BLOCK='$BLOCK' STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
+  echo "$([ "$EXP" = tension ] && echo "EXP=tension ${JAWS:+JAWS=$JAWS }${GRIP:+GRIP=$GRIP }")BLOCK='$BLOCK' ${SEEDS:+SEEDS='$SEEDS' }STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
 fi
 if want report; then
   mkdir -p "$report"

@@ -77,6 +77,20 @@ def test_the_block_is_described_from_its_generator_statistics():
     assert C.surface(dict(gen, cells=125)).startswith("98 of its 125")
 
 
+def test_a_random_block_gives_its_seed_inner_faces_unglued_faces_and_air():
+    cells = [{"fluid": 400, "faces": 16, "free_faces": 0}] + [{"fluid": 400, "faces": 9, "free_faces": 2}] * 26
+    gen = {"cells": 27, "seeds": "random 27 seeds (seed 4, min distance 33.85)", "wall_nodes_per_cell": 642,
+           "volume_mean": 46.0 ** 3, "volume_rel_spread": 0.11, "faces_mean": 9.3, "neighbours_mean": 6.2,
+           "porosity": 0.11, "cell": cells,
+           "unglued_faces": [{"cells": [1, 17], "face_area": 181.2}, {"cells": [2, 13], "face_area": 134.9}]}
+    words = C.block_words(gen)
+    assert "random Laguerre block of 27 cells" in words and "seed 4" in words
+    assert "16 faces for its 1 inner cell;" in words
+    assert "2 faces of the diagram, 316 um^2, without a lamella bond" in words and "porosity 0.11" in words
+    # the surface is counted from the cells' free faces, not from a cube's count
+    assert C.surface(dict(gen, cell=cells[:1] * 3 + cells[1:])).startswith("24 of its 27")
+
+
 def test_a_run_stopped_by_an_error_is_named_with_where_it_stopped(tmp_path):
     e = np.linspace(0.0, 0.1, 21)
     rows = np.column_stack([np.arange(len(e))] + [e if n == "strain" else np.ones_like(e) for n in COMPRESS])

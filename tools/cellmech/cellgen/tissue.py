@@ -643,6 +643,7 @@ def tissue_statistics(head, counts, cells, seeds, walls, lam, fluid):
         extra_special_per_atom=counts["K"], triangle_quality=qual,
         cell=[dict(id=i + 1, seed=[float(v) for v in seeds[i]], centre=[float(v) for v in centres[i]],
                    volume=float(vol[i]), wall_area=float(wall_area[i]), faces=len(cells[i]["normals"]),
+                   free_faces=int((cells[i]["nbr"] < 0).sum()),
                    neighbours=sorted(int(j) + 1 for j in lam.nbrs[i]), nodes=walls.x.shape[1],
                    fluid=int(nfl[i]))
               for i in range(len(cells))],

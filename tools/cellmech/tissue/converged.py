@@ -26,6 +26,7 @@ no blow-up of either run). A number that has not converged is shown as such (mod
 failure_cells).
 """
 import os
+import re
 import sys
 from dataclasses import dataclass
 
@@ -430,13 +431,32 @@ def cell_size(gen):
     return gen["volume_mean"] ** (1 / 3)
 
 
+def random_block(gen):
+    """Whether the generator placed the seeds at random (a Laguerre block, not a lattice)."""
+    return gen["seeds"].startswith("random")
+
+
 def block_words(gen):
-    """The block as the generator made it (gen/block.json), read from the run."""
+    """The block as the generator made it (gen/block.json), read from the run. A random block
+    also gives its seed, the faces of its inner cells (a random block's outer cells are cut by
+    its box), the diagram's faces left without a lamella bond and its porosity."""
     n = gen["cells"]
-    shape = gen["seeds"].split(",")[0].replace("lattice sc ", "")
-    return (f"The coarse {shape} block of {n} cells ({gen['wall_nodes_per_cell']} wall nodes and about "
-            f"{fluid_per_cell(gen):.0f} fluid particles per cell, cells of about {cell_size(gen):.0f} um, "
-            f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average)")
+    if not random_block(gen):
+        shape = gen["seeds"].split(",")[0].replace("lattice sc ", "")
+        return (f"The coarse {shape} block of {n} cells ({gen['wall_nodes_per_cell']} wall nodes and about "
+                f"{fluid_per_cell(gen):.0f} fluid particles per cell, cells of about {cell_size(gen):.0f} um, "
+                f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average)")
+    seed = re.search(r"seed (\d+)", gen["seeds"]).group(1)
+    inner = [c["faces"] for c in gen["cell"] if c.get("free_faces", 1) == 0]
+    unglued = gen.get("unglued_faces", [])
+    return (f"The coarse random Laguerre block of {n} cells (random seeds, seed {seed}; "
+            f"{gen['wall_nodes_per_cell']} wall nodes and about {fluid_per_cell(gen):.0f} fluid particles per "
+            f"cell, cells of about {cell_size(gen):.0f} um, volumes spread {100 * gen['volume_rel_spread']:.0f}%, "
+            f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average"
+            + (f", {np.mean(inner):.3g} faces for its {len(inner)} inner cell{'s' if len(inner) != 1 else ''}"
+               if inner else "")
+            + f"; {len(unglued)} faces of the diagram, {sum(u['face_area'] for u in unglued):.0f} um^2, "
+              f"without a lamella bond; porosity {gen['porosity']:.2f})")
 
 
 def lamella_words(lams):
@@ -590,9 +610,13 @@ made). Not yet held (issue 29, item 4): a random Laguerre block at converged rat
 
 
 def surface(gen):
-    """How much of the block is surface: a cubic block of n^3 cells has (n - 2)^3 inner ones."""
-    n = round(gen["cells"] ** (1 / 3))
-    inner = max(n - 2, 0) ** 3
+    """How much of the block is surface: the cells without a free face (the generator's
+    free_faces), or for a cubic block without them n^3 cells of which (n - 2)^3 are inner."""
+    if all("free_faces" in c for c in gen["cell"]):
+        inner = sum(c["free_faces"] == 0 for c in gen["cell"])
+    else:
+        n = round(gen["cells"] ** (1 / 3))
+        inner = max(n - 2, 0) ** 3
     return ("every cell is a surface cell, free to bulge sideways" if inner == 0 else
             f"{gen['cells'] - inner} of its {gen['cells']} cells lie on its surface, free to bulge sideways")
 
