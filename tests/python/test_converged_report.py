@@ -314,3 +314,6 @@ def test_where_says_a_debond_next_to_the_held_layers():
     assert "(only at the interfaces with the end layers the grips hold whole)" in jaws
     assert "hold whole" not in C.where_text({(-364, "strong"): row({"bottom-middle": 765}, False)})
     assert "hold whole" not in C.where_text({(-364, "strong"): row({"middle-middle": 5}, True)})
+    # a random block's thirds by centroid are not the held cells: no remark, and the list says so
+    thirds = C.where_text({(-364, "strong"): row({"bottom-middle": 765}, True)}, thirds=True)
+    assert "hold whole" not in thirds and "thirds of the cells by their centroids" in thirds
