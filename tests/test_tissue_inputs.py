@@ -418,6 +418,10 @@ def test_tension_jaws(pair):
                     [nbot, ntop] == per_cell, f"{[nbot, ntop]} against {per_cell}")
             T.check("29: jaws cells: the strain refers to the gauge between the held walls",
                     abs(h0 - gauge) <= 5e-4 * gauge, f"{h0} against {gauge:.5g}")
+            held = sorted(set(np.loadtxt(os.path.join(d, "tissue-tension-held.txt"), skiprows=9, ndmin=1)
+                              .astype(int)))
+            T.check("29: jaws cells: the held cells are written for the report",
+                    held == sorted({int(bottom), int(top)}), f"{held} against {[bottom, top]}")
         else:
             near = [(wall & (z <= lo + grip)).sum(), (wall & (z >= hi - grip)).sum()]
             fluid = [(~wall & (z <= lo + grip)).sum(), (~wall & (z >= hi - grip)).sum()]

@@ -317,3 +317,7 @@ def test_where_says_a_debond_next_to_the_held_layers():
     # a random block's thirds by centroid are not the held cells: no remark, and the list says so
     thirds = C.where_text({(-364, "strong"): row({"bottom-middle": 765}, True)}, thirds=True)
     assert "hold whole" not in thirds and "thirds of the cells by their centroids" in thirds
+    r = row({"bottom-middle": 765}, True)
+    r["where"]["held_interfaces"] = {"held-free": 20, "free-free": 745}
+    assert "by whether the grips hold the cells whole: held-free 20, free-free 745" in C.where_text(
+        {(-364, "strong"): r}, thirds=True)

@@ -187,3 +187,11 @@ def test_debonds_by_interface(tmp_path):
     print(w)
     assert w["kinds"] == {"lamella debonding": {"bottom": 2, "middle": 2}}
     assert w["interfaces"] == {"bottom-middle": 10}
+    assert "held_interfaces" not in w
+    # with the cells the jaws hold (cell 1): 1-2 is a held cell's interface, 4-5 two free cells'
+    held = tmp_path / "held.txt"
+    held.write_text("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\n"
+                    "ITEM: ATOMS mol\n1\n1\n")
+    assert TD.held_cells(str(held)) == {1} and TD.held_cells(str(tmp_path / "none.txt")) is None
+    w = TD.failure_where(str(cells), str(pairs), TD.held_cells(str(held)))
+    assert w["held_interfaces"] == {"held-free": 7, "free-free": 3}

@@ -361,6 +361,10 @@ def where_text(rows, thirds=False):
         faces = m["where"].get("interfaces") or {}
         if faces:
             words += "; the debonded bonds by interface: " + ", ".join(f"{k} {n}" for k, n in faces.items())
+        held = m["where"].get("held_interfaces")
+        if held:
+            words += ("; by whether the grips hold the cells whole: "
+                      + ", ".join(f"{k} {n}" for k, n in held.items()))
         at_jaws = (three and m["where"].get("held_whole") and faces and "wall rupture" not in w
                    and all("bottom" in k or "top" in k for k in faces))
         notes.append(f"* Pi {pi}, {lam} lamella: {words}"
@@ -641,7 +645,7 @@ def conditions(kind, runs):
 
     def where(pi, lam, v):
         run = f"{runs}/{kind.stage}{pi}-{lam}-{v:g}/tissue-{kind.stage}"
-        return dict(T.failure_where(f"{run}-cells.dat", f"{run}-pairs.dat"),
+        return dict(T.failure_where(f"{run}-cells.dat", f"{run}-pairs.dat", T.held_cells(f"{run}-held.txt")),
                     held_whole=kind.stage == "tension" and jaws_cells({lam: run_settings(kind, runs, pi, lam, v)}))
     return data, {key: dict(measure(kind, slow, fast, errors), v=v, notes=stop_notes(v, slow, fast, errors),
                             where=where(*key, v))

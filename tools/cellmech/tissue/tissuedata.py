@@ -176,13 +176,14 @@ def failure(d, window=0.01):
 CELL_ZC, CELL_NBROKEN, CELL_NDEBONDED = 11, 12, 15
 
 
-def failure_where(path, pairs=None):
+def failure_where(path, pairs=None, held=None):
     """Where a block failed, from its per-cell table (fix ave/time of compute cell/props): for each
     kind of failure, the cells in which it happened by layer along z (bottom, middle, top thirds of
     the cells' centroids at the start; bottom and top for two layers): {kind: {layer: cells}}, the
     counts from the table's first record, and the number of layers (2 or 3). The bottom and top
     layers are the plates' or the grips'. With the per-pair table (compute cell/contacts), also the
-    debonded bonds by interface between layers: {"bottom-middle": bonds, ...}."""
+    debonded bonds by interface between layers: {"bottom-middle": bonds, ...}, and with held (the
+    cell IDs the jaws hold whole) by whether the grips hold the cells: {"held-free": bonds, ...}."""
     if not os.path.exists(path):    # a run without per-cell tables
         return {}
     rows = load_table(path)
@@ -202,7 +203,18 @@ def failure_where(path, pairs=None):
                                   if (hit & (layer == k)).any()}
     if pairs and os.path.exists(pairs) and "lamella debonding" in out["kinds"]:
         out["interfaces"] = debond_interfaces(pairs, layer, names)
+        if held is not None:
+            out["held_interfaces"] = debond_interfaces(
+                pairs, [0 if c + 1 in held else 1 for c in range(len(z))], ("held", "free"))
     return out
+
+
+def held_cells(path):
+    """The cells in.tissue-tension's jaws cells hold whole (its write_dump of their wall nodes'
+    molecule IDs), or None where the file is not there (jaws nodes, or an older run)."""
+    if not os.path.exists(path):
+        return None
+    return set(np.loadtxt(path, skiprows=9, ndmin=1).astype(int).tolist())
 
 
 def debond_interfaces(pairs, layer, names):
