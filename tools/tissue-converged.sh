@@ -18,6 +18,8 @@
 #                                                  # the same blocks pulled apart (in.tissue-tension)
 #                                                  # at 0.0625 and 0.125 m/s to 8% strain:
 #                                                  # docs/tissue-tension-quasistatic.md
+#   SEEDS="--random 27 --lloyd 5 --seed 4" STRAIN=0.15 RESPA=5 NAME=tissue-quasistatic-random-27 \
+#     REPORT=docs bash tools/tissue-converged.sh   # a random Laguerre block (~2.5 h on 2 cores)
 # Environment: EXP (compress or tension: in.tissue-EXP, stages EXP-PI-LAM-V; the inflations are
 # shared), OUT (run folder), BLOCK (cells along x y z, "2 2 2"), SEEDS (cellgen.py tissue's seeding
 # and shape options in place of the lattice block, e.g. the random Laguerre block

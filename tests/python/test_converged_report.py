@@ -319,5 +319,9 @@ def test_where_says_a_debond_next_to_the_held_layers():
     assert "hold whole" not in thirds and "thirds of the cells by their centroids" in thirds
     r = row({"bottom-middle": 765}, True)
     r["where"]["held_interfaces"] = {"held-free": 20, "free-free": 745}
-    assert "by whether the grips hold the cells whole: held-free 20, free-free 745" in C.where_text(
-        {(-364, "strong"): r}, thirds=True)
+    words = C.where_text({(-364, "strong"): r}, thirds=True)
+    assert "by whether the grips hold the cells whole: held-free 20, free-free 745" in words
+    assert "only in" not in words
+    # in a layered block the remark on the held layers still comes with the count by grips
+    r["where"]["kinds"] = {"lamella debonding": {"bottom": 9, "top": 9}}
+    assert "(only in the layers the plates or grips hold)" in C.where_text({(-364, "strong"): r})

@@ -361,10 +361,10 @@ def where_text(rows, thirds=False):
         faces = m["where"].get("interfaces") or {}
         if faces:
             words += "; the debonded bonds by interface: " + ", ".join(f"{k} {n}" for k, n in faces.items())
-        held = m["where"].get("held_interfaces")
-        if held:
+        by_grips = m["where"].get("held_interfaces")
+        if by_grips:
             words += ("; by whether the grips hold the cells whole: "
-                      + ", ".join(f"{k} {n}" for k, n in held.items()))
+                      + ", ".join(f"{k} {n}" for k, n in by_grips.items()))
         at_jaws = (three and m["where"].get("held_whole") and faces and "wall rupture" not in w
                    and all("bottom" in k or "top" in k for k in faces))
         notes.append(f"* Pi {pi}, {lam} lamella: {words}"
