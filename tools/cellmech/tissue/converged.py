@@ -449,18 +449,17 @@ def block_words(gen):
     also gives its seed, the faces of its inner cells (a random block's outer cells are cut by
     its box), the diagram's faces left without a lamella bond and its porosity."""
     n = gen["cells"]
+    cells = (f"{gen['wall_nodes_per_cell']} wall nodes and about {fluid_per_cell(gen):.0f} fluid particles per "
+             f"cell, cells of about {cell_size(gen):.0f} um")
+    faces = f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average"
     if not random_block(gen):
         shape = gen["seeds"].split(",")[0].replace("lattice sc ", "")
-        return (f"The coarse {shape} block of {n} cells ({gen['wall_nodes_per_cell']} wall nodes and about "
-                f"{fluid_per_cell(gen):.0f} fluid particles per cell, cells of about {cell_size(gen):.0f} um, "
-                f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average)")
+        return f"The coarse {shape} block of {n} cells ({cells}, {faces})"
     seed = re.search(r"seed (\d+)", gen["seeds"]).group(1)
     inner = [c["faces"] for c in gen["cell"] if c.get("free_faces", 1) == 0]
     unglued = gen.get("unglued_faces", [])
-    return (f"The coarse random Laguerre block of {n} cells (random seeds, seed {seed}; "
-            f"{gen['wall_nodes_per_cell']} wall nodes and about {fluid_per_cell(gen):.0f} fluid particles per "
-            f"cell, cells of about {cell_size(gen):.0f} um, volumes spread {100 * gen['volume_rel_spread']:.0f}%, "
-            f"{gen['faces_mean']:.3g} faces and {gen['neighbours_mean']:.3g} glued neighbours per cell on average"
+    return (f"The coarse random Laguerre block of {n} cells (random seeds, seed {seed}; {cells}, volumes "
+            f"spread {100 * gen['volume_rel_spread']:.0f}%, {faces}"
             + (f", {np.mean(inner):.3g} faces for its {len(inner)} inner cell{'s' if len(inner) != 1 else ''}"
                if inner else "")
             + f"; {len(unglued)} faces of the diagram, {sum(u['face_area'] for u in unglued):.0f} um^2, "
