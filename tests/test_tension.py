@@ -106,7 +106,7 @@ def records(pulled):
     rec = load(f"{d}/{prefix}.dat", TENSION)
     cells = load_table(f"{d}/{prefix}-cells.dat")
     pairs = load_table(f"{d}/{prefix}-pairs.dat")
-    A0 = float(re.findall(r"^tension: .* A0 (\S+) um\^2", log, re.M)[-1])    # in.tissue-tension's print
+    A0 = float(re.findall(r"^grips: .* A0 (\S+) um\^2", log, re.M)[-1])    # grips.lmp's print
     mom = np.loadtxt(f"{d}/{momentum}", ndmin=2)
     fmean = np.loadtxt(f"{d}/{gripmean}", ndmin=2)
     assert np.array_equal(mom[:, 0], rec["step"]) and np.array_equal(fmean[:, 0], rec["step"][1:])

@@ -269,9 +269,12 @@ def test_tissue_inputs_checked(pair):
             ("strain", -0.1, r"in.tissue-compress: -var strain -0.1: expected a final strain "
                              r"between 0 and 1"),
             ("kp", 0, r"in.tissue-compress: -var kp 0: expected a plate stiffness > 0"),
+            ("jaws", "foo", r"in.tissue-compress: -var jaws foo: expected plates .* or cells"),
+            ("respa", 5, r"in.tissue-compress: -var respa 5 with jaws cells: .* use respa 1"),
             ("sigl", 0, r"tissue-model.lmp: -var sigl 0, Gl \S+: expected a lamella strength "
                         r"sigl > 0")):
-        rc, log = lmp(compress, d, f"log.8-{var}{value}", **dict(base, **{var: value}))
+        jaws = dict(jaws="cells") if var == "respa" else {}
+        rc, log = lmp(compress, d, f"log.8-{var}{value}", **dict(base, **jaws, **{var: value}))
         refused(f"8: in.tissue-compress -var {var} {value}", rc, log, "ERROR: " + pattern)
     rc, log = lmp(os.path.join(INPUTS, "in.tissue-impact"), d, "log.8-impact",
                   **dict(base, vplate=0))
@@ -399,7 +402,7 @@ def test_tension_jaws(pair):
     run = dict(base, **lens, restart="stack.restart", more="atoms.lmp")
     for jaws, grip in (("cells", 2.0), ("nodes", 5.0)):
         rc, log = lmp(tension, d, f"log.29-{jaws}", **dict(run, jaws=jaws, grip=grip))
-        m = re.findall(r"^tension: (\d+) nodes in the bottom grip, (\d+) in the top grip, H0 (\S+) um",
+        m = re.findall(r"^grips: (\d+) nodes in the bottom grip, (\d+) in the top grip, H0 (\S+) um",
                        log, re.M)
         T.check(f"29: jaws {jaws}: the pull runs", rc == 0 and m, f"rc {rc}: {error_line(log)}")
         if not m:
@@ -409,6 +412,7 @@ def test_tension_jaws(pair):
         wall = typ == 1
         lo, hi = z[wall].min(), z[wall].max()
         if jaws == "cells":
+            pulled = m[-1]
             bottom, top = mol[wall][np.argmin(z[wall])], mol[wall][np.argmax(z[wall])]
             per_cell = [int((wall & (mol == c)).sum()) for c in (bottom, top)]
             gauge = z[wall & (mol == top)].min() - z[wall & (mol == bottom)].max()
@@ -430,3 +434,27 @@ def test_tension_jaws(pair):
             T.check("29: jaws nodes: a grip deeper than the fluid-wall distance holds wall nodes only",
                     [nbot, ntop] == [int(n) for n in near] and min(fluid) > 0,
                     f"{[nbot, ntop]} against {near} (fluid within the grip: {fluid})")
+
+    # pressed instead of pulled: in.tissue-compress -var jaws cells holds the same cells and moves
+    # them together, the strain over the same gauge, both forces positive in compression
+    compress = os.path.join(INPUTS, "in.tissue-compress")
+    press = dict(run, vplate=4, jaws="cells", grip=2.0, leakevery=0)
+    del press["vpull"], press["more"]
+    rc, log = lmp(compress, d, "log.29-press", **press)
+    m = re.findall(r"^grips: (\d+) nodes in the bottom grip, (\d+) in the top grip, H0 (\S+) um", log, re.M)
+    T.check("29: in.tissue-compress -var jaws cells runs", rc == 0 and m, f"rc {rc}: {error_line(log)}")
+    if m:
+        rec = np.loadtxt(os.path.join(d, "tissue-compress.dat"), ndmin=2)
+        eps, ftop, fbot = rec[-1, 2], rec[-1, 4], rec[-1, 5]
+        step = rec[-1, 2] - rec[-2, 2]    # a record's travel: the last may fall short by one
+        held = sorted(set(np.loadtxt(os.path.join(d, "tissue-compress-held.txt"), skiprows=9, ndmin=1)
+                          .astype(int)))
+        print(f"29: jaws cells pressed: H0 {m[-1][2]} um (pulled: {pulled[2]}), strain {eps:.4f}, "
+              f"Ftop {ftop:.4g} nN, Fbot {fbot:.4g} nN, held cells {held}")
+        T.check("29: pressed by the held cells: the same grips and gauge as the pull",
+                m[-1] == pulled, f"{m[-1]} against {pulled}")
+        T.check("29: pressed by the held cells: the block pushes back on both (compression > 0)",
+                ftop > 0 and fbot > 0 and 0 <= run["strain"] - eps <= 1.01 * step,
+                f"{ftop:.4g}, {fbot:.4g}, strain {eps:.4g} of {run['strain']} (a record: {step:.3g})")
+        T.check("29: pressed by the held cells: the held cells are written for the report",
+                len(held) == 2, f"{held}")

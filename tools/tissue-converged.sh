@@ -27,9 +27,11 @@
 # 0.5, tension 0.125: it converges only at 0.0625 m/s, docs/Howto_tissue.rst), STRAIN (0.2, tension 0.08), RESPA (inner wall steps per fluid step, in.tissue-compress -var respa; 1),
 # NP (MPI ranks per run, 1), JOBS (runs at a time, 2), NAME (the report's file name,
 # tissue-quasistatic, tension: tissue-tension-quasistatic), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
-# PIS (turgors, default "-100 -364 -600"), SPEEDS (default "V/2 V"), JAWS and GRIP (tension: what the
-# grips hold, in.tissue-tension's -var jaws and grip; JAWS=cells GRIP=10 holds the 27-cell block's
-# end layers whole and refers the strain to the middle layer). A condition that has not
+# PIS (turgors, default "-100 -364 -600"), SPEEDS (default "V/2 V"), JAWS and GRIP (what the grips
+# hold, in.tissue-tension's and in.tissue-compress's -var jaws and grip; JAWS=cells GRIP=10 holds
+# the 27-cell block's end layers whole and refers the strain to the middle layer; a compression
+# with JAWS=cells has no plates, and goes in a run folder of its own: its stages are named as the
+# plates'; it runs on one level, RESPA=1). A condition that has not
 # converged gets the next rung into the same folder, e.g.
 #   OUT=... PIS=-100 SPEEDS=0.125 ONLY="compress-100-strong-0.125 compress-100-weak-0.125 report"
 # and the report judges each condition on the two slowest speeds it finds (V/2 against V).
@@ -95,7 +97,7 @@ comp() {  # PI LAM SPEED
   lmp -in "$INPUTS/in.tissue-compress" -screen none -var dir "$INPUTS" \
     -var restart "$out/inflate$1-$2/block.restart" -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" \
     -var lamf 1.04 -var vplate "$3" -var strain "$STRAIN" -var respa "$RESPA" -var every 200 -var tabevery 4000 \
-    -var leakevery 0
+    -var leakevery 0 ${JAWS:+-var jaws "$JAWS"} ${GRIP:+-var grip "$GRIP"}
 }
 pull() {  # PI LAM SPEED
   lmp -in "$INPUTS/in.tissue-tension" -screen none -var dir "$INPUTS" \
@@ -112,7 +114,7 @@ done; done; done
 wait
 # what ran, appended for each call that compressed or pulled (the report prints it)
 if [ -z "${ONLY:-}" ] || [[ "$ONLY" == *"$EXP"* ]]; then
-  echo "$([ "$EXP" = tension ] && echo "EXP=tension ${JAWS:+JAWS=$JAWS }${GRIP:+GRIP=$GRIP }")BLOCK='$BLOCK' ${SEEDS:+SEEDS='$SEEDS' }STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
+  echo "$([ "$EXP" = tension ] && echo "EXP=tension ")${JAWS:+JAWS=$JAWS }${GRIP:+GRIP=$GRIP }BLOCK='$BLOCK' ${SEEDS:+SEEDS='$SEEDS' }STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
 fi
 if want report; then
   mkdir -p "$report"

@@ -28,7 +28,7 @@ failure_cells).
 import os
 import re
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import matplotlib
 import numpy as np
@@ -507,9 +507,23 @@ def jaws_cells(lams):
     return any(st.get("jaws", "nodes") == "cells" for st in lams.values())
 
 
+def held_kind(kind, lams):
+    """The kind as the runs loaded it: a compression with its end cells held whole and pressed
+    together (in.tissue-compress -var jaws cells) has grips, not plates."""
+    if kind.stage != "compress" or not jaws_cells(lams):
+        return kind
+    grip = next(iter(lams.values())).get("grip")
+    return replace(kind, ends="grips", protocol=(
+        "the quasi-static protocol of `in.tissue-compress -var jaws cells`: no plates, the whole walls of "
+        f"the cells at its bottom and top held and pressed together (every cell with a wall node within {grip:g} "
+        "um of an end: the ends glued to the platens, so that the held cells cannot rupture and no plate "
+        "flattens a domed outer cell; strain = the held cells' travel over the gauge, the gap between the "
+        "held walls), at rest first, both grips closing after a smooth start"))
+
+
 def protocol(kind, lams):
     """How the block was loaded, in words: the kind's protocol, with what the grips held."""
-    if not jaws_cells(lams):
+    if kind.stage == "compress" or not jaws_cells(lams):
         return kind.protocol
     grip = next(iter(lams.values())).get("grip")
     return kind.protocol.replace(
@@ -521,7 +535,8 @@ def protocol(kind, lams):
 
 def strain_label(kind, lams):
     if kind.stage == "compress":
-        return "strain (closing of the plates / initial height)"
+        return ("strain (closing of the grips / gauge between the held cells)" if jaws_cells(lams)
+                else "strain (closing of the plates / initial height)")
     return ("strain (opening of the grips / gauge between the held cells)" if jaws_cells(lams)
             else "strain (opening of the grips / initial height)")
 
@@ -645,7 +660,7 @@ def conditions(kind, runs):
     def where(pi, lam, v):
         run = f"{runs}/{kind.stage}{pi}-{lam}-{v:g}/tissue-{kind.stage}"
         return dict(T.failure_where(f"{run}-cells.dat", f"{run}-pairs.dat", T.held_cells(f"{run}-held.txt")),
-                    held_whole=kind.stage == "tension" and jaws_cells({lam: run_settings(kind, runs, pi, lam, v)}))
+                    held_whole=jaws_cells({lam: run_settings(kind, runs, pi, lam, v)}))
     return data, {key: dict(measure(kind, slow, fast, errors), v=v, notes=stop_notes(v, slow, fast, errors),
                             where=where(*key, v))
                   for key, (v, slow, fast, errors) in data.items()}
@@ -665,6 +680,7 @@ def main(argv=None):
     info = run_info(kind, runs)
     gen = gen_stats(f"{runs}/gen/block.json")
     lams = lamella_settings(kind, runs, data)
+    kind = held_kind(kind, lams)
     figure(kind, data, lams, f"{report}/{name}.png")
     with open(f"{report}/{name}.md", "w") as f:
         f.write(text(kind, rows, info, gen, name, lams))
