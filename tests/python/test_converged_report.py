@@ -303,6 +303,20 @@ def test_a_tension_says_what_its_grips_held(tmp_path):
     assert C.strain_label(TENS, old) == "strain (opening of the grips / initial height)"
 
 
+def test_a_compression_by_held_cells_says_it_has_grips(tmp_path):
+    """in.tissue-compress -var jaws cells: no plates; the report's words and tables name grips, the
+    strain is over the gauge; a compression between plates keeps the plates' words."""
+    flat_runs(tmp_path, "compress", -364, "strong", (0.25, 0.125), ["-var", "jaws", "cells", "-var", "grip", "2"])
+    lams = C.lamella_settings(COMP, str(tmp_path), C.load_runs(COMP, str(tmp_path)))
+    kind = C.held_kind(COMP, lams)
+    assert kind.ends == "grips" and "`in.tissue-compress -var jaws cells`" in C.protocol(kind, lams)
+    assert "within 2 um of an end" in kind.protocol and kind.window == COMP.window
+    assert C.strain_label(kind, lams) == "strain (closing of the grips / gauge between the held cells)"
+    plates = {"strong": {"sigl": 300.0, "Gl": 1000.0, "jaws": "plates"}}
+    assert C.held_kind(COMP, plates) is COMP and C.protocol(COMP, plates) == COMP.protocol
+    assert C.strain_label(COMP, plates) == "strain (closing of the plates / initial height)"
+
+
 def test_where_says_a_debond_next_to_the_held_layers():
     """where_text: a debonding only at the interfaces with end layers held whole is named as such;
     one between two free layers, or with the ends held by nodes, is not."""
