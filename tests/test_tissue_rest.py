@@ -14,11 +14,15 @@ The glued pair (cellgen.py tissue --n 1 1 2, coarse), inflated with in.tissue-in
 to its turgor (Pi -364 kPa), then left alone for 8 us at the physical Lp and water's viscosity
 (tissue-restart.lmp, as every experiment continues). Asserted:
  * the inflation debonds no lamella bond (the glued area is the generator's);
- * left alone, its motion does not grow: the rms speed of its particles stays below 0.1 m/s.
-   Measured: 0.04-0.08 m/s (the settle's own, with the osmosis still on); the main job's former
-   inflation (6000 steps undamped, Lp 10) leaves a pair whose rms speed grows from 0.5 to 1.8 m/s
-   over the 8 us. What is left in.tissue-compress takes out before its plates move (its `rest`,
-   5% of the plate speed);
+ * left alone, it stays slower than the experiments load it: the rms speed of its particles stays
+   below the coarse blocks' converged plate speed, 0.25 m/s (in.tissue-compress's default vplate).
+   The main job's former inflation (6000 steps undamped, Lp 10) leaves a pair whose rms speed
+   grows from 0.5 to 1.8 m/s over the 8 us. What is left in.tissue-compress takes out before its
+   plates move (its `rest`, 5% of the plate speed). Measured on nine microstates (the generator's
+   positions moved by 1e-6 um, 2026-11-27): largest rms speed 0.038-0.109 m/s, its last quarter
+   0.85-1.70 times its first; this test's own microstate 0.081 m/s. (Until then the bound was
+   0.1 m/s, the largest of one microstate: two of the nine pass it by 0.006-0.009 m/s, and a
+   last-bit change of the inflation once read 0.23 m/s.);
  * its mean pressure stays within 1% of the turgor it was inflated to (364 kPa): the fluid has
    filled its cell. Measured 0.28%; the former inflation swings between 355 and 429 kPa (18%),
    and debonds 4 of the pair's 97 lamella bonds.
@@ -32,7 +36,7 @@ import pytest
 import lmptest as T
 
 PI = -364.0
-VMAX = 0.1                     # m/s (docstring)
+VMAX = 0.25                    # m/s: in.tissue-compress's default plate speed (docstring)
 FREE = 8000                    # steps left alone after the inflation, 8 us
 FREE_RUN = """
 variable        restart index pair.restart
@@ -71,6 +75,7 @@ def test_inflated_tissue_at_rest(rundir, inflated):
     drift = np.max(np.abs(p / -PI - 1))
     print(f"left alone {FREE} steps: rms speed {vrms.min():.2e}-{vrms.max():.2e} m/s, "
           f"mean pressure {p.min():.2f}-{p.max():.2f} kPa")
-    T.check(f"left alone, its motion does not grow (rms speed < {VMAX} m/s)", vrms.max() < VMAX,
+    T.check(f"left alone, it stays slower than the plates load it (rms speed < {VMAX} m/s)",
+            vrms.max() < VMAX,
             f"largest {vrms.max():.3g} m/s")
     T.check("its turgor stays within 1% of the inflation's", drift < 0.01, f"{drift:.2%}")
