@@ -261,8 +261,11 @@ def lamella_settings(kind, runs, data):
 
 
 def figure(kind, data, lams, path):
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
-    for ax, lam in zip(axes, LAMELLAE):
+    # a panel per lamella that ran: an empty one would read as a condition that failed
+    ran = [lam for lam in LAMELLAE if any(key[1] == lam for key in data)]
+    fig, axes = plt.subplots(1, len(ran), figsize=(5 * len(ran), 4), sharey=True, squeeze=False)
+    axes = axes[0]
+    for ax, lam in zip(axes, ran):
         for n, pi in enumerate(PIS):
             if (pi, lam) not in data:
                 continue
