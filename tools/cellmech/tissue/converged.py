@@ -511,11 +511,17 @@ def jaws_cells(lams):
 
 
 def held_kind(kind, lams):
-    """The kind as the runs loaded it: a compression with its end cells held whole and pressed
-    together (in.tissue-compress -var jaws cells) has grips, not plates."""
-    if kind.stage != "compress" or not jaws_cells(lams):
+    """The kind as the runs loaded it, with what the grips held (jaws cells: the end cells held
+    whole): a compression by them has grips, not plates; a pull says what its grips held."""
+    if not jaws_cells(lams):
         return kind
     grip = next(iter(lams.values())).get("grip")
+    if kind.stage == "tension":
+        return replace(kind, protocol=kind.protocol.replace(
+            "the wall nodes near its bottom and top gripped",
+            f"the whole walls of the cells at its bottom and top held by the grips (`-var jaws cells`, every cell "
+            f"with a wall node within {grip:g} um of an end: the ends glued in, so the held cells cannot rupture; "
+            "strain = the grips' travel over the gauge, the gap between the held walls)"))
     return replace(kind, ends="grips", protocol=(
         "the quasi-static protocol of `in.tissue-compress -var jaws cells`: no plates, the whole walls of "
         f"the cells at its bottom and top held and pressed together (every cell with a wall node within {grip:g} "
@@ -526,14 +532,7 @@ def held_kind(kind, lams):
 
 def protocol(kind, lams):
     """How the block was loaded, in words: the kind's protocol, with what the grips held."""
-    if kind.stage == "compress" or not jaws_cells(lams):
-        return kind.protocol
-    grip = next(iter(lams.values())).get("grip")
-    return kind.protocol.replace(
-        "the wall nodes near its bottom and top gripped",
-        f"the whole walls of the cells at its bottom and top held by the grips (`-var jaws cells`, every cell "
-        f"with a wall node within {grip:g} um of an end: the ends glued in, so the held cells cannot rupture; "
-        "strain = the grips' travel over the gauge, the gap between the held walls)")
+    return held_kind(kind, lams).protocol
 
 
 def strain_label(kind, lams):
