@@ -107,6 +107,15 @@ def first_rise(x, count):
     return (float(x[k[0]]), int(k[0])) if len(k) else (None, None)
 
 
+def start_pressure(d, upto):
+    """The block's mean turgor as its loading begins: the median of P_mean_kPa over the records up
+    to `upto` of strain past the first. The first record alone is no measure: under respa it reads
+    several percent low (336 kPa against 361-364 kPa in the next five records of a block at Pi -364
+    kPa, respa 5), single level it agrees with the next."""
+    e = np.asarray(d["strain"], float)
+    return float(np.median(np.asarray(d["P_mean_kPa"], float)[np.abs(e - e[0]) <= upto]))
+
+
 def gen_stats(path):
     with open(path) as f:
         return json.load(f)
