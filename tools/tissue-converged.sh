@@ -25,7 +25,7 @@
 # and shape options in place of the lattice block, e.g. the random Laguerre block
 # "--random 27 --lloyd 5 --seed 4", docs/cellgen.rst), V (fast speed, m/s, default
 # 0.5, tension 0.125: it converges only at 0.0625 m/s, docs/Howto_tissue.rst), STRAIN (0.2, tension 0.08), RESPA (inner wall steps per fluid step, in.tissue-compress -var respa; 1),
-# NP (MPI ranks per run, 1), JOBS (runs at a time, 2), NAME (the report's file name,
+# LEVEL (the cells' wall resolution, cellgen.py --level: 3, coarse; 4, the paper's), NP (MPI ranks per run, 1), JOBS (runs at a time, 2), NAME (the report's file name,
 # tissue-quasistatic, tension: tissue-tension-quasistatic), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
 # PIS (turgors, default "-100 -364 -600"), SPEEDS (default "V/2 V"), JAWS and GRIP (what the grips
 # hold, in.tissue-tension's and in.tissue-compress's -var jaws and grip; JAWS=cells GRIP=10 holds
@@ -79,10 +79,11 @@ bg() { while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done; st
 declare -A SIGL GL
 for lam in strong weak; do read -r "SIGL[$lam]" "GL[$lam]" < <($py -m cellmech.params lamella $lam sigl Gl); done
 PIS=${PIS:-"-100 -364 -600"}
-read -r NF < <(level_params 3 nfluid)
+LEVEL=${LEVEL:-3}
+read -r NF < <(level_params "$LEVEL" nfluid)
 SEEDS=${SEEDS:-"--lattice sc --n $BLOCK"}
 # shellcheck disable=SC2086  # SEEDS is a list of cellgen options
-gen() { $py "$here/tools/cellgen.py" tissue -o block.data $SEEDS --level 3 --nfluid "$NF" \
+gen() { $py "$here/tools/cellgen.py" tissue -o block.data $SEEDS --level "$LEVEL" --nfluid "$NF" \
           --stats block.json > block.txt; }
 stage gen gen
 # lmp ARGS...: a LAMMPS run, its effective settings first written to ./settings.json
@@ -114,7 +115,7 @@ done; done; done
 wait
 # what ran, appended for each call that compressed or pulled (the report prints it)
 if [ -z "${ONLY:-}" ] || [[ "$ONLY" == *"$EXP"* ]]; then
-  echo "$([ "$EXP" = tension ] && echo "EXP=tension ")${JAWS:+JAWS=$JAWS }${GRIP:+GRIP=$GRIP }BLOCK='$BLOCK' ${SEEDS:+SEEDS='$SEEDS' }STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
+  echo "$([ "$EXP" = tension ] && echo "EXP=tension ")$([ "$LEVEL" = 3 ] || echo "LEVEL=$LEVEL ")${JAWS:+JAWS=$JAWS }${GRIP:+GRIP=$GRIP }BLOCK='$BLOCK' ${SEEDS:+SEEDS='$SEEDS' }STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
 fi
 if want report; then
   mkdir -p "$report"
