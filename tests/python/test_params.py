@@ -161,3 +161,24 @@ def test_settings_json_holds_the_vars_passed_and_the_defaults(tmp_path):
     p = subprocess.run([sys.executable, "-m", "cellmech.params", "settings", "--", "-var", "a", "1"],
                        env=env, cwd=tmp_path, capture_output=True, text=True, timeout=60)
     assert p.returncode == 2 and "no -in FILE" in p.stderr
+
+
+def test_settings_json_has_the_model_lengths_of_the_data(tmp_path):
+    """The model lengths come with the data (cellgen.py writes DATA.lmp, in.tissue-inflate writes
+    RESTART.lmp beside its restart) and the inputs include them before their own defaults, the
+    paper's level 4: settings.json must record the data's (s 6.4 for a coarse block, not 3.2)."""
+    lv3 = params.level(3)
+    lengths = "".join(f"variable {k} index {lv3[k]}\n" for k in ("s", "r0", "f0", "reach"))
+    (tmp_path / "block.data.lmp").write_text(lengths + "variable special index 27\n")
+    (tmp_path / "block.restart.lmp").write_text(lengths)
+    inflate = params.write_settings(["-in", os.path.join(params.INPUTS, "in.tissue-inflate"), "-var", "data",
+                                     str(tmp_path / "block.data")], str(tmp_path))
+    compress = params.write_settings(["-in", os.path.join(params.INPUTS, "in.tissue-compress"), "-var", "restart",
+                                      str(tmp_path / "block.restart")], str(tmp_path))
+    for eff in (inflate, compress):
+        assert [eff[k] for k in ("s", "r0", "f0", "reach")] == [lv3[k] for k in ("s", "r0", "f0", "reach")]
+    assert lv3["s"] != params.defaults(os.path.join(params.INPUTS, "in.tissue-compress"))["s"]
+    # no companion file: the input's defaults, as LAMMPS would stop on (tissue-restart.lmp's error)
+    bare = params.write_settings(["-in", os.path.join(params.INPUTS, "in.tissue-compress"), "-var", "restart",
+                                  str(tmp_path / "none.restart")], str(tmp_path))
+    assert bare["s"] == params.defaults(os.path.join(params.INPUTS, "in.tissue-compress"))["s"]

@@ -80,6 +80,7 @@ WEAK_LAMELLA = dict(sigl=30.0, Gl=100.0)
 
 _VARIABLE = re.compile(r"^\s*variable\s+(\w+)\s+index\s+(\S+)")
 _INCLUDE = re.compile(r"^\s*include\s+\$\{dir\}/(\S+)")
+_COMPANION = re.compile(r"\binclude\s+\$\{(data|restart)\}\.lmp\b")
 
 
 def table(path=MODEL_FILE, overrides=None):
@@ -112,12 +113,16 @@ def lamellae():
     return {"strong": dict(sigl=t["sigl"], Gl=t["Gl"]), "weak": dict(WEAK_LAMELLA)}
 
 
-def defaults(path, inputs=INPUTS):
+def defaults(path, inputs=INPUTS, var=None):
     """The `variable NAME index VALUE` settings of an input script and of the files it includes
     (`include ${dir}/NAME`, in order, from the folder inputs), the first definition of each: what
-    LAMMPS uses where no -var sets it. Conditional includes (`if ... then "include ..."`) are not
-    followed."""
+    LAMMPS uses where no -var sets it. Of the conditional includes (`if ... then "include ..."`)
+    only the companion of a data or restart file is followed, `include ${data}.lmp` or
+    `include ${restart}.lmp` where var (the -var settings) names a file that has one, as LAMMPS
+    does: it holds the model lengths of the data's wall level (s, r0, f0, reach, dt), which the
+    input's own defaults (the paper's level 4) would misstate for the coarse cells."""
     out = {}
+    var = var or {}
 
     def walk(p):
         with open(p) as f:
@@ -128,6 +133,10 @@ def defaults(path, inputs=INPUTS):
                 m = _INCLUDE.match(line)
                 if m and os.path.exists(os.path.join(inputs, m.group(1))):
                     walk(os.path.join(inputs, m.group(1)))
+                m = _COMPANION.search(line)
+                name = var.get(m.group(1), out.get(m.group(1))) if m else None
+                if name is not None and os.path.exists(f"{name}.lmp"):
+                    walk(f"{name}.lmp")
     walk(path)
     return out
 
@@ -159,7 +168,7 @@ def write_settings(argv, folder=".", key=None):
     if inp is None:
         raise ValueError("settings: no -in FILE in the LAMMPS command line")
     inputs = var.get("dir", os.path.dirname(os.path.abspath(inp)))
-    eff = dict(defaults(inp, str(inputs)))
+    eff = dict(defaults(inp, str(inputs), var))
     eff.update(var)
     path = os.path.join(folder, SETTINGS)
     data = json.load(open(path)) if os.path.exists(path) else {}
