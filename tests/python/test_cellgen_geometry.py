@@ -84,3 +84,35 @@ def test_count_search_finds_the_largest_spacing():
     # one particle: the centre, whatever the spacing (the search stops at its upper end, 2 R)
     pts, s = cellgen.fluid_by_count(30.0, 1, 3.2)
     assert pts.tolist() == [[0.0, 0.0, 0.0]] and s == pytest.approx(60.0)
+
+
+def test_fluid_fills_a_wall_that_is_star_shaped_not_convex():
+    """A tissue cell's wall is star-shaped around its centre but not convex (concave rims where
+    its domes meet its flat glued faces). The fluid lattice must fill all of it, each point inside
+    and at least inset from the wall: checked against brute force on a cell with six dents."""
+    nodes, tri, _ = cellgen.icosphere(4)
+    # r = 20 (1 - 0.25 |n . axis|^8) along each axis: dents at the six poles, concave around them
+    r = 20.0 * (1.0 - 0.25 * (np.abs(nodes) ** 8).sum(axis=1))
+    wall = nodes * r[:, None]
+    a, b, c = wall[tri[:, 0]], wall[tri[:, 1]], wall[tri[:, 2]]
+    volume = np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0
+    nrm = np.cross(b - a, c - a)
+    beyond = (wall @ nrm.T - np.einsum("ij,ij->i", nrm, a)) / np.linalg.norm(nrm, axis=1)
+    assert beyond.max() > 1.0                                  # not convex: nodes beyond some planes
+    spacing, inset = 1.0, 1.5
+    full = cellgen.fluid_in_wall(wall, tri, np.zeros(3), spacing, 0.0)
+    print(f"inset 0: {len(full) * spacing ** 3:.0f} um^3 of the wall's {volume:.0f}")
+    assert abs(len(full) * spacing ** 3 / volume - 1.0) < 0.03   # the lattice's own error
+    kept = cellgen.fluid_in_wall(wall, tri, np.zeros(3), spacing, inset)
+    # brute force, on every 7th point: at least inset from every triangle, and inside the wall by
+    # its winding number (the solid angles of the outward triangles seen from it sum to 4 pi)
+    from cellmech.cellgen.fluid import wall_distance
+    sample = kept[::7]
+    assert np.concatenate([wall_distance(p[None], a[None], b[None], c[None]) for p in sample]).min() >= inset
+    for p in sample:
+        x, y, z = a - p, b - p, c - p
+        lx, ly, lz = (np.linalg.norm(v, axis=1) for v in (x, y, z))
+        num = np.einsum("ij,ij->i", x, np.cross(y, z))
+        den = (lx * ly * lz + np.einsum("ij,ij->i", x, y) * lz + np.einsum("ij,ij->i", x, z) * ly
+               + np.einsum("ij,ij->i", y, z) * lx)
+        assert abs(2.0 * np.arctan2(num, den).sum() / (4.0 * math.pi) - 1.0) < 1e-6

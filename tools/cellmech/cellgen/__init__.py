@@ -31,7 +31,7 @@ Usage:
   cellgen.py tissue -o tissue.data (--lattice sc|bcc|fcc|hex [--n 2 2 2] [--radius 30 | --spacing A]
                     | --random N [--size LX LY LZ] [--min-dist D] | --centres FILE) [--lloyd K]
                     [--seed 1] [--elongate ax ay az] [--level 3] [--gap 2.56] [--sharpness 16]
-                    [--air F] [--nfluid 440 | --fluid-spacing S] [--inset 3.2] [--bond-cutoff C]
+                    [--air F] [--nfluid 440 | --fluid-spacing S] [--inset R0] [--bond-cutoff C]
                     [--no-glue] [--stats FILE]        (docs/cellgen.rst, "Tissue"; needs scipy)
 """
 # The package: mesh (the icosphere wall), fluid (the fluid fill), cells (single cells, the sheet),

@@ -92,7 +92,7 @@ def tissue_options(t):
     f = t.add_mutually_exclusive_group()
     f.add_argument("--nfluid", type=whole(0), help="fluid count of a mean cell (440)")
     f.add_argument("--fluid-spacing", type=number(above=0), help="fluid lattice spacing")
-    t.add_argument("--inset", type=number(minimum=0), help="fluid distance from the wall (default 3.2 um)")
+    t.add_argument("--inset", type=number(minimum=0), help="fluid distance from the wall (default r0 of the level: 3.2 um at level 3, 1.6 at 4)")
     t.add_argument("--bond-cutoff", type=number(above=0), help="lamella bond cutoff (default 1.5 gap)")
     t.add_argument("--no-glue", action="store_true", help="no middle-lamella bonds")
     t.add_argument("--rho0", type=number(above=0), help="fluid density (1 pg/um^3)")

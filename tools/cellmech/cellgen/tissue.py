@@ -13,12 +13,11 @@ import numpy as np
 
 from .. import params
 from .datafile import write_data, write_lengths
-from .fluid import fluid_in_wall, lattice_count_bound, spacing_for_count
+from .fluid import fluid_in_wall, lattice_count_bound, spacing_for_count, wall_distance
 from .limits import MAX_SHARPNESS, check_count, fail
 from .mesh import icosphere, mesh_volumes, wall_quality
 
 R_CELL = params.CELL["R"]                       # the single cell's radius, um
-R0_COARSE = params.LEVELS[3]["r0"]              # fluid-wall contact distance r0, level 3, um
 WALL_AREAL = params.CELL["M_wall"] / (4.0 * math.pi * R_CELL ** 2)   # the single cell's, pg/um^2
 LATTICES = {  # basis (in lattice constants) and repeat vector of each seed lattice
     "sc": ([(0, 0, 0)], (1, 1, 1)),
@@ -519,10 +518,9 @@ def tissue_fluid(walls, centres, size, nfluid, fluid_spacing, inset):
                     f"--fluid-spacing {spacing:g} in {ncell} cells")
     elif nfluid > 0:
         m = int(np.argmin(np.abs(vol - vol.mean())))
-        # no fluid fits where the inset reaches past the nearest triangle plane around the centre
-        a, b, c = (x[m][tri[:, k]] - centres[m] for k in range(3))
-        nrm = np.cross(b - a, c - a)
-        rin = (np.einsum("ij,ij->i", nrm, a) / np.linalg.norm(nrm, axis=1)).min() - inset
+        # no fluid fits where the inset reaches past the wall's nearest point to the centre
+        a, b, c = (x[m][tri[:, k]][None] - centres[m] for k in range(3))
+        rin = float(wall_distance(np.zeros((1, 3)), a, b, c)[0]) - inset
         if not rin > 0:
             tfail(f"--inset: expected a distance smaller than the cell's inner radius "
                   f"{rin + inset:.4g} (the fluid stays that far inside the wall), got {inset:g}")
@@ -714,7 +712,9 @@ def build_tissue(output, lattice=None, random=None, centres=None, n=(2, 2, 2), r
     # polyhedron, and where it is round its dome beyond the free faces) less its wall's volume
     territory = territory_volumes(cells, gauge.centres, gauge.normals, gauge.depth + 0.5 * gap, gauge.free)
     walls = build_walls(gauge, territory, level, sharpness, air, smooth, min_angle)
-    inset = inset if inset is not None else R0_COARSE
+    # the level's fluid-wall contact distance; a level without a row in the level table (a coarser
+    # mesh, with no model lengths) keeps level 3's
+    inset = inset if inset is not None else params.LEVELS.get(level, params.LEVELS[3])["r0"]
     fspacing, fluid = tissue_fluid(walls, gauge.centres, csize, nfluid, fluid_spacing, inset)
     lam, glue = build_lamella(walls, cells, gap, bond_cutoff), not no_glue
     counts = tissue_counts(walls, lam, glue)

@@ -107,6 +107,12 @@ def first_rise(x, count):
     return (float(x[k[0]]), int(k[0])) if len(k) else (None, None)
 
 
+# the turgor "at the start" of a loading: over its first half percent of strain, the first half of
+# the smooth start (the block hardly loaded: its turgor rises by 2 kPa over the first 2% of a
+# compression)
+START_STRAIN = 0.005
+
+
 def start_pressure(d, upto):
     """The block's mean turgor as its loading begins: the median of P_mean_kPa over the records up
     to `upto` of strain past the first. The first record alone is no measure: under respa it reads
