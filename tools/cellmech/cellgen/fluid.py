@@ -72,7 +72,8 @@ def wall_distance(p, a, b, c):
 
 def _ray_reach(u, a, b, c):
     """Distance along unit rays u (n, 3) from the origin to the first of triangles a, b, c (n, k, 3
-    each) they cross (Moller-Trumbore), inf where none of the k does."""
+    each) they cross (Moller-Trumbore); 0 where none of the k does, so that such a point is left
+    out rather than let in from outside the wall."""
     e1, e2 = b - a, c - a
     h = np.cross(u[:, None, :], e2)
     det = np.einsum("...i,...i", e1, h)
@@ -84,7 +85,7 @@ def _ray_reach(u, a, b, c):
         bv = f * np.einsum("...i,...i", u[:, None, :], q)
         t = f * np.einsum("...i,...i", e2, q)
     hit = (np.abs(det) > 0) & (bu >= 0) & (bv >= 0) & (bu + bv <= 1) & (t > 0)
-    return np.where(hit, t, np.inf).min(axis=1)
+    return np.where(hit.any(axis=1), np.where(hit, t, np.inf).min(axis=1), 0.0)
 
 
 def fluid_in_wall(nodes, tri, centre, spacing, inset, candidates=12):
