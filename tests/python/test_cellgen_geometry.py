@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from cellmech import cellgen
+from cellmech.cellgen.fluid import wall_distance
 
 
 @pytest.mark.parametrize("level", range(6))
@@ -106,7 +107,6 @@ def test_fluid_fills_a_wall_that_is_star_shaped_not_convex():
     kept = cellgen.fluid_in_wall(wall, tri, np.zeros(3), spacing, inset)
     # brute force, on every 7th point: at least inset from every triangle, and inside the wall by
     # its winding number (the solid angles of the outward triangles seen from it sum to 4 pi)
-    from cellmech.cellgen.fluid import wall_distance
     sample = kept[::7]
     assert np.concatenate([wall_distance(p[None], a[None], b[None], c[None]) for p in sample]).min() >= inset
     for p in sample:

@@ -90,13 +90,11 @@ def _ray_reach(u, a, b, c):
 
 def fluid_in_wall(nodes, tri, centre, spacing, inset, candidates=12):
     """Cubic lattice through the centre, the points inside the wall and at least inset from it.
-    The wall is star-shaped around the centre (every cellgen wall is), not always convex: where a
-    tissue cell's domed free faces meet its flat glued ones the rims are concave, and there the
-    planes of some triangles pass as close as 19 um to the centre of a 46-um cell, so the inner
-    side of every triangle's plane (this function's test before) held only 36% (level 4) to 47%
-    (level 3) of the cell. Inside: the ray from the centre through the point meets the wall
-    beyond it. Clearance: the distance to the nearest of the candidates triangles nearest it
-    (by their centroids) is at least inset."""
+    The wall is star-shaped around the centre (every cellgen wall is) but not always convex: where
+    a tissue cell's domed free faces meet its flat glued ones the rims are concave, and the inner
+    side of every triangle's plane holds only 36-47% of such a cell (docs/cellgen.rst). Inside: the
+    ray from the centre through the point meets the wall beyond it. Clearance: the point is at
+    least inset from each of the `candidates` triangles whose centroids are nearest it."""
     from scipy.spatial import cKDTree
     x = nodes - centre
     rmax = np.linalg.norm(x, axis=1).max()

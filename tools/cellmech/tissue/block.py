@@ -71,7 +71,7 @@ def measure_curve(R, d, sm):
     R["first_debond_strain"], _ = T.first_rise(eps, d["debonded_bonds"])
     ev = [x for x in (R["first_rupture_strain"], R["first_debond_strain"]) if x is not None]
     R["first_event_strain"] = min(ev) if ev else None
-    R["P_start_kPa"] = T.start_pressure(d, T.START_STRAIN)
+    R["P_start_kPa"] = T.start_pressure(d)
     R["glued_start_um2"] = float(d["glued_area_um2"][0])
     R["debarea_start_um2"] = float(d["debonded_area_um2"][0])
     R["glued_initial_um2"] = R["glued_start_um2"] + R["debarea_start_um2"]

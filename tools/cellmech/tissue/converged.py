@@ -191,7 +191,7 @@ def measure(kind, slow, fast, errors=(None, None)):
     # came right after either peak (it may have made it)
     agree = peaks_agree(f, ff)
     stops = error_stops((slow, fast), (f, ff), errors)
-    return dict(P0=T.start_pressure(slow, T.START_STRAIN), E=modulus(slow, *kind.window) if intact else float("nan"),
+    return dict(P0=T.start_pressure(slow), E=modulus(slow, *kind.window) if intact else float("nan"),
                 fail=f, fail_fast=ff, failure_converged=first_converged and not rising and agree and not stops,
                 first_converged=first_converged, first_event=first[0] if f["first"] else None,
                 burst=burst, rising=rising, peak_agrees=agree, stopped=stops,

@@ -113,7 +113,7 @@ def first_rise(x, count):
 START_STRAIN = 0.005
 
 
-def start_pressure(d, upto):
+def start_pressure(d, upto=START_STRAIN):
     """The block's mean turgor as its loading begins: the median of P_mean_kPa over the records up
     to `upto` of strain past the first. The first record alone is no measure: under respa it reads
     several percent low (336 kPa against 361-364 kPa in the next five records of a block at Pi -364
