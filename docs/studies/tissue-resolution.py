@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The tissue modulus and failure at two wall resolutions (docs/studies/tissue-resolution.md): the coarse 2x2x2
-lattice block made at level 3 (642 wall nodes a cell) and at the paper's level 4 (2562), each
+"""The tissue modulus and failure at two wall resolutions (docs/studies/tissue-resolution.md): the
+coarse 2x2x2 lattice block made at level 3 (642 wall nodes a cell) and at the paper's level 4 (2562), each
 inflated at Pi -364 kPa with the strong lamella and compressed between plates at v and 2v by
 tools/tissue-converged.sh, one run folder a level:
   for L in 3 4; do LEVEL=$L OUT=RUNS/L$L BLOCK="2 2 2" STRAIN=0.12 SPEEDS="0.25 0.125" PIS=-364 \\
