@@ -553,7 +553,9 @@ def summary(kind, rows, gen, lams, lamf):
     speeds = sorted({m["v"] for m in rows.values()})
     ran = (f"{block_words(gen)}, glued by the middle lamella, was inflated at Pi "
            f"{and_list(map(str, pis))} kPa with {lamella_words(lams)}, then {kind.did} "
-           f"(walls rupture at the paper's critical stretch {lamf:g}) with {protocol(kind, lams)}, "
+           + (f"(walls rupture at the paper's critical stretch {lamf:g}) " if lamf
+              else "(walls that never rupture: lamf 0) ")
+           + f"with {protocol(kind, lams)}, "
            f"at v = {and_list(f'{v:g}' for v in speeds)} m/s (the "
            "speed column) and, as the rate evidence, at 2v (the ladder's last two rungs).")
     passed = (f"The modulus converged in {len(conv)} of {len(rows)} conditions ({modulus_rule(kind)})"
