@@ -11,7 +11,8 @@
    Fluid near a triangle is found in the full neighbor list of the
    triangle's central node (the angle's atom 2, which owns the angle with
    newton_bond on: the triangle contract of cell_fields.h) with cutoff
-   r0 + reach, reach >= |B - x_b|. Forces on
+   r0 + reach, reach >= |B - x_b|, once per build: each step walks only
+   what lay within r0 + skin of B then (cell_near_list.h). Forces on
    ghost nodes and ghost fluid reach their owners by the reverse
    communication of newton_pair on.
    pair_coeff I J f0 r0 [gamma] (as cell/lj84): triangles whose central node
@@ -84,10 +85,11 @@ void PairCellVirtual::compute(int eflag, int vflag)
   const int nlocal = atom->nlocal;
   // the setup of a run, with the triangle list and the ghost nodes in place
   if (update->setupflag) check_contact_distance();
+  if (near.stale(lmp)) find_near();
   CellMech::for_each_wall_triangle(
-      neighbor->anglelist, neighbor->nanglelist, [&](int, int a, int b, int c) {
+      neighbor->anglelist, neighbor->nanglelist, [&](int n, int a, int b, int c) {
         if (b >= nlocal) return;    // only with newton_bond off; init_style forbids it
-        repel_fluid(a, b, c, eflag);
+        repel_fluid(n, a, b, c, eflag);
       });
   // a pass of its own: a run without adhesion does what it did, as fast
   if (adhering)
@@ -123,8 +125,42 @@ void PairCellVirtual::check_reach(int a, int b, int c, const double *B)
              why);
 }
 
-// the virtual particle of triangle a-b-c (central node b) repels the fluid in b's neighbour list
-void PairCellVirtual::repel_fluid(int a, int b, int c, int eflag)
+// The fluid that can come within r0 of each triangle's virtual particle before the next
+// neighbour-list build (cell_near_list.h): what lies within r0 + skin of its barycentre at the
+// build, in the order of the central node's list, so that repel_fluid finds the same contacts in
+// the same order as a walk of the whole list (reach + r0 + skin) would.
+void PairCellVirtual::find_near()
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  int **anglelist = neighbor->anglelist;
+  const int nangle = neighbor->nanglelist;
+  // rounding must not drop a contact at the margin's edge
+  const double margin = neighbor->skin * (1.0 + 1.0e-12);
+  near.start(nangle);
+  for (int n = 0; n < nangle; n++) {
+    near.open(n);
+    const int a = anglelist[n][0], b = anglelist[n][1], c = anglelist[n][2];
+    const int btype = type[b];
+    if (b >= atom->nlocal || !listed[btype]) continue;
+    double B[3];
+    for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+    const int *jlist = list->firstneigh[b];
+    const int jnum = list->numneigh[b];
+    for (int jj = 0; jj < jnum; jj++) {
+      const int k = jlist[jj] & NEIGHMASK;
+      const int ktype = type[k];
+      if (!setflag[btype][ktype] && !setflag[ktype][btype]) continue;
+      const double dx = x[k][0] - B[0], dy = x[k][1] - B[1], dz = x[k][2] - B[2];
+      const double rc = r0[btype][ktype] + margin;
+      if (dx * dx + dy * dy + dz * dz < rc * rc) near.add(k);
+    }
+  }
+  near.close();
+}
+
+// the virtual particle of triangle n, a-b-c (central node b), repels the fluid near it
+void PairCellVirtual::repel_fluid(int n, int a, int b, int c, int eflag)
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -139,14 +175,11 @@ void PairCellVirtual::repel_fluid(int a, int b, int c, int eflag)
                "which has no cell/virtual coefficients; give them for the wall type and the "
                "fluid type (pair_coeff WALL FLUID cell/virtual f0 r0 [gamma])",
                atom->tag[a], atom->tag[b], atom->tag[c], atom->tag[b], btype);
-  int *jlist = list->firstneigh[b];
-  const int jnum = list->numneigh[b];
   bool have_vb = false;
 
-  for (int jj = 0; jj < jnum; jj++) {
-    const int k = jlist[jj] & NEIGHMASK;
+  for (const int *kp = near.begin(n); kp != near.end(n); ++kp) {
+    const int k = *kp;
     const int ktype = type[k];
-    if (!setflag[btype][ktype] && !setflag[ktype][btype]) continue;
     const double dx = x[k][0] - B[0];
     const double dy = x[k][1] - B[1];
     const double dz = x[k][2] - B[2];
@@ -406,6 +439,11 @@ double PairCellVirtual::init_one(int i, int j)
 void PairCellVirtual::write_restart_settings(FILE *fp)
 {
   fwrite(&reach, sizeof(double), 1, fp);
+}
+
+double PairCellVirtual::memory_usage()
+{
+  return PairCellLJ84::memory_usage() + near.memory_usage();
 }
 
 void PairCellVirtual::read_restart_settings(FILE *fp)

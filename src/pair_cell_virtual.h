@@ -16,6 +16,7 @@ PairStyle(cell/virtual,PairCellVirtual);
 #ifndef LMP_PAIR_CELL_VIRTUAL_H
 #define LMP_PAIR_CELL_VIRTUAL_H
 
+#include "cell_near_list.h"
 #include "pair_cell_lj84.h"
 
 #include <vector>
@@ -33,6 +34,7 @@ class PairCellVirtual : public PairCellLJ84 {
   double init_one(int, int) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
+  double memory_usage() override;
   // some fluid type adheres to its own cell's wall (after init)
   bool adheres() const { return adhering; }
 
@@ -50,7 +52,10 @@ class PairCellVirtual : public PairCellLJ84 {
   // r0 must be at least this fraction of the wall's mean triangle edge (check_contact_distance)
   static constexpr double MIN_R0_EDGE = 0.5;
   void check_contact_distance();
-  void repel_fluid(int a, int b, int c, int eflag);
+  // the fluid near each triangle, found at each neighbour-list build (find_near)
+  CellMech::NearList near;
+  void find_near();
+  void repel_fluid(int n, int a, int b, int c, int eflag);
   void hold_fluid(int a, int b, int c, int eflag);
   void tally_contact(int k, int a, int b, int c, const double *del, double fpair, double e,
                      int eflag);
