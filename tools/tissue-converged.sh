@@ -26,7 +26,8 @@
 # "--random 27 --lloyd 5 --seed 4", docs/cellgen.rst), V (fast speed, m/s, default
 # 0.5, tension 0.125: it converges only at 0.0625 m/s, docs/Howto_tissue.rst), STRAIN (0.2, tension 0.08), RESPA (inner wall steps per fluid step, in.tissue-compress -var respa; 1),
 # LEVEL (the cells' wall resolution, cellgen.py --level: 3, coarse; 4, the paper's), LAMF (the walls'
-# critical stretch, 1.04; 0: they never rupture, e.g. for a time to solution), NP (MPI ranks per run, 1), JOBS (runs at a time, 2), NAME (the report's file name,
+# critical stretch; unset: the inputs' default, the paper's; 0: they never rupture, e.g. for a time
+# to solution), NP (MPI ranks per run, 1), JOBS (runs at a time, 2), NAME (the report's file name,
 # tissue-quasistatic, tension: tissue-tension-quasistatic), ONLY (space-separated stage names: gen, inflate-PI-LAM, compress-PI-LAM-V, report),
 # PIS (turgors, default "-100 -364 -600"), SPEEDS (default "V/2 V"), JAWS and GRIP (what the grips
 # hold, in.tissue-tension's and in.tissue-compress's -var jaws and grip; JAWS=cells GRIP=10 holds
@@ -51,7 +52,7 @@ case $EXP in
 esac
 BLOCK=${BLOCK:-"2 2 2"}
 RESPA=${RESPA:-1}
-LAMF=${LAMF:-1.04}
+LAMF=${LAMF:-}
 if [ "$EXP" = tension ] && [ "$RESPA" != 1 ]; then
   echo "tissue-converged.sh: RESPA=$RESPA: in.tissue-tension runs on one level (respa is not safe past the lamella's first failures)" >&2
   exit 1
@@ -99,13 +100,13 @@ wait
 comp() {  # PI LAM SPEED
   lmp -in "$INPUTS/in.tissue-compress" -screen none -var dir "$INPUTS" \
     -var restart "$out/inflate$1-$2/block.restart" -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" \
-    -var lamf "$LAMF" -var vplate "$3" -var strain "$STRAIN" -var respa "$RESPA" -var every 200 -var tabevery 4000 \
+    ${LAMF:+-var lamf "$LAMF"} -var vplate "$3" -var strain "$STRAIN" -var respa "$RESPA" -var every 200 -var tabevery 4000 \
     -var leakevery 0 ${JAWS:+-var jaws "$JAWS"} ${GRIP:+-var grip "$GRIP"}
 }
 pull() {  # PI LAM SPEED
   lmp -in "$INPUTS/in.tissue-tension" -screen none -var dir "$INPUTS" \
     -var restart "$out/inflate$1-$2/block.restart" -var Pi "$1" -var sigl "${SIGL[$2]}" -var Gl "${GL[$2]}" \
-    -var lamf "$LAMF" -var vpull "$3" -var strain "$STRAIN" -var every 200 -var tabevery 4000 \
+    ${LAMF:+-var lamf "$LAMF"} -var vpull "$3" -var strain "$STRAIN" -var every 200 -var tabevery 4000 \
     ${JAWS:+-var jaws "$JAWS"} ${GRIP:+-var grip "$GRIP"}
 }
 declare -A run_of=([compress]=comp [tension]=pull)
@@ -117,7 +118,7 @@ done; done; done
 wait
 # what ran, appended for each call that compressed or pulled (the report prints it)
 if [ -z "${ONLY:-}" ] || [[ "$ONLY" == *"$EXP"* ]]; then
-  echo "$([ "$EXP" = tension ] && echo "EXP=tension ")$([ "$LEVEL" = 3 ] || echo "LEVEL=$LEVEL ")${JAWS:+JAWS=$JAWS }${GRIP:+GRIP=$GRIP }BLOCK='$BLOCK' ${SEEDS:+SEEDS='$SEEDS' }$([ "$LAMF" = 1.04 ] || echo "LAMF=$LAMF ")STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
+  echo "$([ "$EXP" = tension ] && echo "EXP=tension ")$([ "$LEVEL" = 3 ] || echo "LEVEL=$LEVEL ")${JAWS:+JAWS=$JAWS }${GRIP:+GRIP=$GRIP }BLOCK='$BLOCK' ${SEEDS:+SEEDS='$SEEDS' }${LAMF:+LAMF=$LAMF }STRAIN=$STRAIN SPEEDS='$SPEEDS' PIS='$PIS' RESPA=$RESPA NP=$NP on $(nproc) cores, $(date -u '+%Y-%m-%d %H:%M UTC')" >> run-info.txt
 fi
 if want report; then
   mkdir -p "$report"
