@@ -20,12 +20,20 @@
    pair, bond and angle style then tallied its energy every step, a tenth
    of a compression's time. This fix evaluates the coordinates itself and
    leaves the energy to the steps that output it.
+
+   The work of the moving walls (f_ID[nwall + m], m = 1 .. nwall): a
+   quasi-static test compares the kinetic energy with it (issue 29). Summed
+   in an input by fix ave/time at every step, it asked every compute for
+   every step, the same cost again (21% of a compression); this fix sums it
+   per rank in each call and adds the ranks up only when it is output, so
+   it also costs no reduction per step.
 ------------------------------------------------------------------------- */
 
 #include "fix_cell_plates.h"
 
 #include "input.h"
 #include "modify.h"
+#include "update.h"
 #include "variable.h"
 
 using namespace LAMMPS_NS;
@@ -34,6 +42,11 @@ FixCellPlates::FixCellPlates(LAMMPS *_lmp, int narg, char **arg) :
     FixWallHarmonic(_lmp, narg, arg), nsum(0)
 {
   for (double &e : esum) e = 0.0;
+  for (int m = 0; m < 6; m++) {
+    work[m] = lastcoord[m] = 0.0;
+    started[m] = 0;
+  }
+  size_vector = 2 * nwall;
 }
 
 /* ----------------------------------------------------------------------
@@ -68,9 +81,37 @@ void FixCellPlates::post_force(int vflag)
   varflag = 1;
   for (int m = 0; m < nwall; m++)
     if (moving[m]) {
+      add_work(m, coord0[m]);
       coord0[m] = fixed[m];
       xstyle[m] = VARIABLE;
     }
+}
+
+/* ----------------------------------------------------------------------
+   The work wall m has done on this rank's atoms in the step that brought it to coord: the force
+   of its atoms on it (ewall, fix wall's sign: the reaction) against its move, at the end of the
+   step, as a sum of F v dt. A setup moves nothing: it only takes the coordinate a run starts from.
+------------------------------------------------------------------------- */
+
+void FixCellPlates::add_work(int m, double coord)
+{
+  if (started[m] && !update->setupflag) work[m] -= ewall[m + 1] * (coord - lastcoord[m]);
+  lastcoord[m] = coord;
+  started[m] = 1;
+}
+
+/* ----------------------------------------------------------------------
+   1 .. nwall: fix wall's force on each wall; nwall + 1 .. 2 nwall: the work each has done since
+   the fix was defined (zero for a wall that does not move, and for every wall when epsilon or
+   sigma is a variable: post_force then leaves the walls to fix wall/harmonic)
+------------------------------------------------------------------------- */
+
+double FixCellPlates::compute_vector(int n)
+{
+  if (n < nwall) return FixWallHarmonic::compute_vector(n);
+  double all[6];
+  MPI_Allreduce(work, all, nwall, MPI_DOUBLE, MPI_SUM, world);
+  return all[n - nwall];
 }
 
 /* ----------------------------------------------------------------------

@@ -14,7 +14,10 @@ step: the inner steps would then see another plate than Verlet's steps). Asserte
    force), and fix wall/harmonic the last of them, which differs from the mean by a printed
    fraction of the force (the reason for the fix);
  * cell/plates on the outermost level under respa reports the force of its one call per step,
-   k_p times the overlaps at the outer step's positions (1e-9).
+   k_p times the overlaps at the outer step's positions (1e-9);
+ * the work of the moving top plate it sums (f_ID[4]) is the force times the plate's speed summed
+   over the steps as an input would sum it with fix ave/time (1e-9 of it: the plate moves by
+   exactly vplate dt a step, so the two differ by round-off), and the fixed plate's is zero.
 """
 import numpy as np
 import pytest
@@ -63,6 +66,26 @@ def test_verlet_plates_match_wall_harmonic(wall):
     T.check("the top plate reached the wall under Verlet", np.max(a[:, 1]) > 0, f"{np.max(a[:, 1]):.4g}")
     T.check("Verlet: cell/plates = fix wall/harmonic bit for bit (forces, momentum, every step)",
             a.shape == b.shape and np.array_equal(a, b))
+
+
+def test_plates_work(wall):
+    """The work the plates did, summed by the fix, against the same sum made by the input."""
+    d = wall
+    tail = """variable        dW equal v_Ftop*v_vplate*dt
+fix             work all ave/time 1 1 1 v_dW ave running
+variable        Win equal f_work*(step+1)
+run             1200
+print           "WORK ${Win} $(f_plates[4]:%.17g) $(f_plates[3]:%.17g)"
+"""
+    run(d, "work", "cell/plates", tail)
+    line = [ln for ln in open(f"{d}/log.work") if ln.startswith("WORK ")][-1].split()
+    w_input, w_top, w_bottom = (float(x) for x in line[1:4])
+    err = abs(w_top - w_input) / abs(w_input)
+    print(f"work of the moving top plate: summed by the fix {w_top:.10g} nN um, by the input "
+          f"{w_input:.10g} ({err:.2e}); the fixed bottom plate's {w_bottom:g}")
+    T.check("the top plate did work on the wall", w_input > 0, f"{w_input:.4g}")
+    T.check("cell/plates sums the moving plate's work as the input does", err < 1e-9, f"{err:.2e}")
+    T.check("the fixed plate does no work", w_bottom == 0.0, f"{w_bottom:g}")
 
 
 def test_respa_plates_mean_over_inner_steps(wall):

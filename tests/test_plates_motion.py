@@ -6,9 +6,14 @@
   rises linearly from 0 to vplate over the ramp's time 2 ramp D0 / vplate and is vplate after it,
   within 1% of vplate (the records are 0.05 us apart: a finite difference of a quadratic is exact
   at the interval's midpoint, so what is left is round-off of the printed strain); both plates
-  move, so the cell's z momentum stays below 5% of what the top plate alone gives it (M vplate / 2
-  once the cell rides on the bottom plate: measured with `plates top -var ramp 0` in the same
-  test); the plates' work is the integral of each plate's force times its own speed (vplate / 2
+  move, so the cell's z momentum, averaged over the run, stays below 5% of what the top plate alone
+  gives it (M vplate / 2 once the cell rides on the bottom plate: the largest |pz| of `plates top
+  -var ramp 0` in the same test). The mean, not the largest |pz|: the cell rattles between the
+  plates, and the largest momentum of that rattling is the microstate's. Over four microstates
+  (in.inflate -var jitter 0-3) the largest |pz| of both plates read 3.1, 4.5, 5.0 and 7.0% of the
+  top plate's at in.inflate's former skin of 0.5 um, 6.8, 4.3, 5.9 and 7.3% at 1.0 (so which code
+  passed a 5% test of it was round-off's choice), the mean 0.21, 0.05, 0.36, 0.67% and 0.35, 0.06,
+  0.56, 0.68%; a top plate alone drives it to 100%. The plates' work is the integral of each plate's force times its own speed (vplate / 2
   each) over the run, within 1% (the input sums every step, the test has the records);
 * a ramp as long as the whole travel is refused with motion.lmp's message.
 About 25 s on one core.
@@ -60,10 +65,12 @@ def test_closing_speed_follows_ramp(both):
 def test_both_plates_keep_momentum(inflated, both):
     rec, _ = both
     top, _ = compress(inflated, "top", plates="top", ramp=0)
-    pz_both = float(np.max(np.abs(rec["pz_pg_um_us"])))
+    pz_both = float(abs(np.mean(rec["pz_pg_um_us"])))
     pz_top = float(np.max(np.abs(top["pz_pg_um_us"])))
-    T.check("both plates: the cell's z momentum stays below 5% of the top plate's alone", pz_both < 0.05 * pz_top,
-            f"both {pz_both:.4g}, top alone {pz_top:.4g} pg um/us")
+    print(f"the cell's z momentum: both plates, mean over the run {pz_both:.4g} (largest "
+          f"{np.max(np.abs(rec['pz_pg_um_us'])):.4g}); top plate alone, largest {pz_top:.4g} pg um/us")
+    T.check("both plates: the cell's mean z momentum stays below 5% of the top plate's alone",
+            pz_both < 0.05 * pz_top, f"both {pz_both:.4g}, top alone {pz_top:.4g} pg um/us")
 
 
 def test_plates_work(both):

@@ -32,8 +32,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 # the columns the inputs append for this check (in.compress, in.tissue-compress): compute ke of all
-# atoms, and the plates' work, the running sum of each plate's force times its speed times dt
-# over the steps (lammps-inputs/plates.lmp)
+# atoms, and the plates' work, each plate's force times its move summed over the steps (fix
+# cell/plates; the grips' by fix ave/time, lammps-inputs/grips-move.lmp)
 KE, WORK = "kinetic_energy_nNum", "plate_work_nNum"
 # in.compress's record after its step column (in.tissue-compress's: tissuedata.COMPRESS)
 CELL_COMPRESS = ["time_us", "strain", "F_top_nN", "F_bottom_nN", "F_equator_nN", "P_mean_kPa",
