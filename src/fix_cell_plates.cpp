@@ -42,10 +42,7 @@ FixCellPlates::FixCellPlates(LAMMPS *_lmp, int narg, char **arg) :
     FixWallHarmonic(_lmp, narg, arg), nsum(0)
 {
   for (double &e : esum) e = 0.0;
-  for (int m = 0; m < 6; m++) {
-    work[m] = lastcoord[m] = 0.0;
-    started[m] = 0;
-  }
+  for (int m = 0; m < 6; m++) work[m] = lastcoord[m] = 0.0;
   size_vector = 2 * nwall;
 }
 
@@ -90,14 +87,14 @@ void FixCellPlates::post_force(int vflag)
 /* ----------------------------------------------------------------------
    The work wall m has done on this rank's atoms in the step that brought it to coord: the force
    of its atoms on it (ewall, fix wall's sign: the reaction) against its move, at the end of the
-   step, as a sum of F v dt. A setup moves nothing: it only takes the coordinate a run starts from.
+   step, as a sum of F v dt. A setup moves nothing: it only takes the coordinate a run starts from
+   (every run starts with one, so the first coordinate is always a setup's).
 ------------------------------------------------------------------------- */
 
 void FixCellPlates::add_work(int m, double coord)
 {
-  if (started[m] && !update->setupflag) work[m] -= ewall[m + 1] * (coord - lastcoord[m]);
+  if (!update->setupflag) work[m] -= ewall[m + 1] * (coord - lastcoord[m]);
   lastcoord[m] = coord;
-  started[m] = 1;
 }
 
 /* ----------------------------------------------------------------------

@@ -29,10 +29,9 @@ class FixCellPlates : public FixWallHarmonic {
  protected:
   double esum[7];    // energy and force on each wall, summed over this outer step's inner steps
   int nsum;          // inner steps summed
-  // the work each wall has done on this rank's atoms since the fix was defined, the coordinate
-  // of its last step, and whether it has one
+  // the work each wall has done on this rank's atoms since the fix was defined, and the
+  // coordinate of its last step
   double work[6], lastcoord[6];
-  int started[6];
   void add_work(int m, double coord);
 };
 

@@ -100,6 +100,13 @@ void PairCellVirtual::compute(int eflag, int vflag)
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
+// the virtual particle of triangle a-b-c, at its barycentre
+void PairCellVirtual::barycentre(int a, int b, int c, double *B) const
+{
+  double **x = atom->x;
+  for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+}
+
 // the virtual particle at B must be within reach of the central node b, in whose neighbour list
 // the fluid near it is looked for
 void PairCellVirtual::check_reach(int a, int b, int c, const double *B)
@@ -144,7 +151,7 @@ void PairCellVirtual::find_near()
     const int btype = type[b];
     if (b >= atom->nlocal || !listed[btype]) continue;
     double B[3];
-    for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+    barycentre(a, b, c, B);
     const int *jlist = list->firstneigh[b];
     const int jnum = list->numneigh[b];
     for (int jj = 0; jj < jnum; jj++) {
@@ -166,7 +173,7 @@ void PairCellVirtual::repel_fluid(int n, int a, int b, int c, int eflag)
   double **v = atom->v;
   int *type = atom->type;
   double B[3], VB[3];
-  for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+  barycentre(a, b, c, B);
   check_reach(a, b, c, B);
   const int btype = type[b];
   if (!listed[btype])
@@ -212,7 +219,7 @@ void PairCellVirtual::hold_fluid(int a, int b, int c, int eflag)
   const int *type = atom->type;
   const tagint *molecule = atom->molecule;
   double B[3];
-  for (int d = 0; d < 3; d++) B[d] = (x[a][d] + x[b][d] + x[c][d]) / 3.0;
+  barycentre(a, b, c, B);
   const int btype = type[b];
   int *jlist = list->firstneigh[b];
   const int jnum = list->numneigh[b];

@@ -55,6 +55,7 @@ class PairCellVirtual : public PairCellLJ84 {
   // the fluid near each triangle, found at each neighbour-list build (find_near)
   CellMech::NearList near;
   void find_near();
+  void barycentre(int a, int b, int c, double *B) const;
   void repel_fluid(int n, int a, int b, int c, int eflag);
   void hold_fluid(int a, int b, int c, int eflag);
   void tally_contact(int k, int a, int b, int c, const double *del, double fpair, double e,
